@@ -1,0 +1,2 @@
+#include <iostream>
+int main() { std::cout << "dualhex: skeleton\n"; return 0; }
