@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Usage: scripts/build.sh [BUILD_DIR] [extra cmake -D options...]
+# Configures (Release by default) and builds dualhex with 2 parallel jobs.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${1:-$root/build}"
+shift || true
+jobs="${DUALHEX_JOBS:-2}"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE="${CMAKE_BUILD_TYPE:-Release}" "$@"
+cmake --build "$build" -j"$jobs"
