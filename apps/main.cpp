@@ -1,2 +1,43 @@
+// dualhex: builds the CLI11 app, registers the subcommands, maps outcomes to exit codes.
+#include <exception>
 #include <iostream>
-int main() { std::cout << "dualhex: skeleton\n"; return 0; }
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+    using namespace dualhex::app;
+    CLI::App app{"dualhex: optimal dual schemes for adaptive-grid hexmeshing"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "dualhex 0.1.0");
+    register_classify(app);
+    register_grid(app);
+    register_verify(app);
+
+    try {
+        app.parse(argc, argv);  // subcommand callbacks run in here
+        return kOk;
+    } catch (const CLI::ParseError& e) {
+        // --help / --version are "errors" with exit code 0 in CLI11; they print to stdout.
+        const int code = app.exit(e);
+        return code == 0 ? kOk : kUsage;
+    } catch (const Exit& e) {
+        return e.code;
+    } catch (const UsageError& e) {
+        std::cerr << "error: " << e.what() << '\n';
+        return kUsage;
+    } catch (const NotYetAvailable& e) {
+        std::cerr << "error: not yet available: " << e.what() << '\n';
+        return kInternal;
+    }
+    catch (const std::exception& e) {
+        if (auto msg = input_error_message(e)) {  // dualhex::InputError from grid I/O
+            std::cerr << "error: " << *msg << '\n';
+            return kInputError;
+        }
+        std::cerr << "internal error: " << e.what() << '\n';
+        return kInternal;
+    } catch (...) {
+        std::cerr << "internal error: unknown exception\n";
+        return kInternal;
+    }
+}

@@ -1,0 +1,103 @@
+// dualhex verify: runs every registered check, prints a PASS/FAIL table (or JSON).
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "verify_checks.hpp"
+
+namespace dualhex::app {
+namespace {
+
+struct VerifyOptions {
+    bool json = false;
+    bool list = false;
+    std::vector<std::string> only;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool selected(const std::string& name, const std::vector<std::string>& only) {
+    if (only.empty()) return true;
+    for (const auto& s : only)
+        if (name.find(s) != std::string::npos) return true;
+    return false;
+}
+
+void run_verify(const VerifyOptions& opt) {
+    const CheckRegistry registry = default_checks();
+    if (opt.list) {
+        nlohmann::json list = nlohmann::json::array();
+        for (const auto& c : registry.checks()) {
+            if (!selected(c.name, opt.only)) continue;
+            if (opt.json)
+                list.push_back({{"name", c.name}, {"description", c.description}});
+            else
+                std::cout << c.name << "  " << c.description << '\n';
+        }
+        if (opt.json) print_json({{"checks", list}});
+        return;
+    }
+
+    const auto t_all = std::chrono::steady_clock::now();
+    nlohmann::json checks = nlohmann::json::array();
+    int passed = 0, failed = 0, skipped = 0;
+    for (const auto& c : registry.checks()) {
+        if (!selected(c.name, opt.only)) continue;
+        const auto t0 = std::chrono::steady_clock::now();
+        CheckOutcome out;
+        try {
+            out = c.run();
+        } catch (const std::exception& e) {
+            out.status = CheckStatus::kFail;
+            out.summary = std::string("exception: ") + e.what();
+        }
+        const double dt = seconds_since(t0);
+        switch (out.status) {
+            case CheckStatus::kPass: ++passed; break;
+            case CheckStatus::kFail: ++failed; break;
+            case CheckStatus::kSkip: ++skipped; break;
+        }
+        checks.push_back({{"name", c.name},
+                          {"description", c.description},
+                          {"status", to_string(out.status)},
+                          {"ok", out.status != CheckStatus::kFail},
+                          {"summary", out.summary},
+                          {"seconds", dt},
+                          {"details", out.details}});
+        if (!opt.json) {
+            std::printf("%-4s  %-28s %8.3f s  %s\n", to_string(out.status), c.name.c_str(), dt, out.summary.c_str());
+            std::fflush(stdout);
+        }
+    }
+    const double total = seconds_since(t_all);
+    const bool ok = failed == 0;
+    if (opt.json) {
+        print_json({{"ok", ok},
+                    {"passed", passed},
+                    {"failed", failed},
+                    {"skipped", skipped},
+                    {"seconds", total},
+                    {"checks", checks}});
+    } else {
+        std::printf("%s: %d passed, %d failed, %d skipped in %.3f s\n", ok ? "OK" : "FAILED", passed, failed, skipped,
+                    total);
+    }
+    if (!ok) throw Exit{kCheckFailed};
+}
+
+}  // namespace
+
+void register_verify(CLI::App& app) {
+    auto opt = std::make_shared<VerifyOptions>();
+    auto* sub = app.add_subcommand("verify", "Run every verification check (exit 1 if any fails)");
+    add_json_flag(*sub, opt->json);
+    sub->add_flag("--list", opt->list, "List the checks instead of running them");
+    sub->add_option("--only", opt->only, "Run only checks whose name contains this text (repeatable)");
+    sub->callback([opt] { run_verify(*opt); });
+}
+
+}  // namespace dualhex::app

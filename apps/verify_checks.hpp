@@ -1,0 +1,45 @@
+#pragma once
+// The registry of named checks that `dualhex verify` runs. Each area adds its checks in
+// its own add_*_checks function (verify_checks.cpp for now; later layers such as
+// checkers/ and schemes/ add theirs the same way and get listed in default_checks()).
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace dualhex::app {
+
+enum class CheckStatus { kPass, kFail, kSkip };
+
+struct CheckOutcome {
+    CheckStatus status = CheckStatus::kFail;
+    std::string summary;                             ///< one line for the table
+    nlohmann::json details = nlohmann::json::object();  ///< machine-readable numbers
+};
+
+struct Check {
+    std::string name;         ///< stable identifier, e.g. "symmetry.group-order"
+    std::string description;  ///< what is checked, one line
+    std::function<CheckOutcome()> run;  ///< may throw: reported as FAIL with the message
+};
+
+class CheckRegistry {
+public:
+    void add(Check check) { checks_.push_back(std::move(check)); }
+    [[nodiscard]] const std::vector<Check>& checks() const { return checks_; }
+
+private:
+    std::vector<Check> checks_;
+};
+
+void add_symmetry_checks(CheckRegistry& registry);
+void add_configuration_checks(CheckRegistry& registry);
+void add_grid_checks(CheckRegistry& registry);
+
+/// Every check that exists so far, in run order.
+CheckRegistry default_checks();
+
+const char* to_string(CheckStatus s);
+
+}  // namespace dualhex::app
