@@ -21,8 +21,14 @@ struct GridOptions {
 }
 
 void run_check(const GridOptions& opt) { (void)opt; not_yet("grid check"); }
-void run_balance(const GridOptions& opt) { (void)opt; not_yet("grid balance"); }
-void run_pair(const GridOptions& opt) { (void)opt; not_yet("grid pair"); }
+void run_balance(const GridOptions& opt) {
+    check_output(opt.output, opt.force);
+    not_yet("grid balance");
+}
+void run_pair(const GridOptions& opt) {
+    check_output(opt.output, opt.force);
+    not_yet("grid pair");
+}
 
 }  // namespace
 

@@ -17,10 +17,14 @@ void add_output_options(CLI::App& sub, std::string& output, bool& force) {
     sub.add_flag("--force", force, "Overwrite the output file if it exists");
 }
 
-std::ofstream open_output(const std::filesystem::path& path, bool force) {
+void check_output(const std::filesystem::path& path, bool force) {
     std::error_code ec;
-    if (std::filesystem::exists(path, ec) && !force)
+    if (!force && std::filesystem::exists(path, ec))
         throw UsageError("output file '" + path.string() + "' exists; use --force to overwrite it");
+}
+
+std::ofstream open_output(const std::filesystem::path& path, bool force) {
+    check_output(path, force);
     std::ofstream out(path, std::ios::out | std::ios::trunc);
     if (!out) throw std::runtime_error("cannot open '" + path.string() + "' for writing");
     return out;

@@ -48,6 +48,10 @@ CLI::Option* add_json_flag(CLI::App& sub, bool& json);
 /// Adds `-o,--output FILE` (required) and `--force` to a command that writes a file.
 void add_output_options(CLI::App& sub, std::string& output, bool& force);
 
+/// Throws UsageError (exit 2) if `path` exists and not `force`: call it before the work
+/// so a refused overwrite costs nothing.
+void check_output(const std::filesystem::path& path, bool force);
+
 /// Opens `path` for writing. Refuses (UsageError, exit 2) to overwrite an existing file
 /// unless `force`; throws std::runtime_error if the file cannot be opened.
 std::ofstream open_output(const std::filesystem::path& path, bool force);
