@@ -48,7 +48,10 @@ protected:
 
     Result run(const std::vector<std::string>& args) const {
         std::string cmd = quote(DUALHEX_EXE);
-        for (const auto& a : args) cmd += " " + quote(a);
+        for (const auto& a : args) {
+            cmd += ' ';
+            cmd += quote(a);
+        }
         // (appended piecewise: `" >" + std::string` trips GCC 12's -Wrestrict false positive)
         cmd += " >";
         cmd += quote((dir_ / "stdout").string());
