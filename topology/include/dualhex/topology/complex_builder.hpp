@@ -1,0 +1,63 @@
+#pragma once
+// ComplexBuilder: assembles a CellComplex from lattice points, vertex loops and cells,
+// welding everything by exact keys.
+//   - add_vertex: one vertex per distinct LatticePoint;
+//   - add_face: one face per distinct cyclic vertex sequence, up to rotation AND reversal;
+//     the returned half-face has the orientation of the given loop (side 0 if it runs like
+//     the stored loop, side 1 if reversed);
+//   - add_cell: a list of outward half-faces (see cell_complex.hpp for the convention).
+// Hashing uses flat open-addressing tables over the builder's own arrays, so adding a face
+// does not allocate per face. Malformed input that cannot even be stored (an empty loop,
+// an unknown handle) throws std::invalid_argument; everything else is stored as given and
+// left for `validate` to judge.
+#include <span>
+#include <vector>
+
+#include "dualhex/topology/cell_complex.hpp"
+#include "dualhex/topology/id_hash_table.hpp"
+
+namespace dualhex {
+
+class ComplexBuilder {
+public:
+    ComplexBuilder() = default;
+    /// Pre-sizes the arrays (optional, for speed).
+    void reserve(std::size_t n_vertices, std::size_t n_faces, std::size_t n_cells);
+
+    /// The vertex at `p`, created if new.
+    VertexHandle add_vertex(const LatticePoint& p);
+    /// The vertex at `p`, or an invalid handle.
+    [[nodiscard]] VertexHandle find_vertex(const LatticePoint& p) const;
+
+    /// The half-face with this loop's orientation; the face is created if no face with the
+    /// same cyclic sequence (in either direction) exists yet.
+    HalfFaceHandle add_face(std::span<const VertexHandle> loop);
+    HalfFaceHandle add_face(std::initializer_list<VertexHandle> loop) {
+        return add_face(std::span<const VertexHandle>(loop.begin(), loop.size()));
+    }
+    /// A new cell with these outward half-faces (no dedupe: adding a cell twice is an
+    /// error `validate` reports).
+    CellHandle add_cell(std::span<const HalfFaceHandle> halffaces);
+    /// Convenience: each loop a face of the cell, counter-clockwise seen from outside.
+    CellHandle add_cell_from_loops(const std::vector<std::vector<LatticePoint>>& loops);
+
+    [[nodiscard]] std::size_t n_vertices() const { return positions_.size(); }
+    [[nodiscard]] std::size_t n_faces() const { return face_offsets_.size() - 1; }
+    [[nodiscard]] std::size_t n_cells() const { return cell_offsets_.size() - 1; }
+
+    /// The complex built so far (the builder stays usable).
+    [[nodiscard]] CellComplex build() const;
+
+private:
+    std::vector<LatticePoint> positions_;
+    std::vector<std::uint32_t> face_offsets_{0};
+    std::vector<VertexHandle> face_loops_;
+    std::vector<std::uint32_t> cell_offsets_{0};
+    std::vector<HalfFaceHandle> cell_halffaces_;
+    detail::IdHashTable vertex_table_;
+    detail::IdHashTable face_table_;
+    std::vector<VertexHandle> scratch_;
+    std::vector<HalfFaceHandle> cell_scratch_;
+};
+
+}  // namespace dualhex

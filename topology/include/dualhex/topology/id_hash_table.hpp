@@ -1,0 +1,76 @@
+#pragma once
+// A flat open-addressing hash set of int32 ids (linear probing). The keys live elsewhere
+// (in the caller's flat arrays), so the table stores only (hash, id) and asks the caller
+// whether a stored id equals the probe. This is what lets the builder weld vertices and
+// dedupe faces without a per-key heap allocation.
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace dualhex::detail {
+
+inline std::uint64_t mix64(std::uint64_t v) {
+    v += 0x9e3779b97f4a7c15ULL;
+    v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    v = (v ^ (v >> 27)) * 0x94d049bb133111ebULL;
+    return v ^ (v >> 31);
+}
+
+class IdHashTable {
+public:
+    explicit IdHashTable(std::size_t expected = 16) { rehash(capacity_for(expected)); }
+
+    void reserve(std::size_t expected) {
+        if (capacity_for(expected) > slots_.size()) rehash(capacity_for(expected));
+    }
+
+    /// The stored id with this hash for which `equals(id)` holds, or -1.
+    template <class Eq>
+    [[nodiscard]] std::int32_t find(std::uint64_t hash, Eq&& equals) const {
+        for (std::size_t i = hash & mask_;; i = (i + 1) & mask_) {
+            const Slot& s = slots_[i];
+            if (s.id < 0) return -1;
+            if (s.hash == hash && equals(s.id)) return s.id;
+        }
+    }
+
+    /// Inserts `id` unless an equal id is stored; returns (stored id, inserted?).
+    template <class Eq>
+    std::pair<std::int32_t, bool> insert(std::uint64_t hash, std::int32_t id, Eq&& equals) {
+        if (const std::int32_t found = find(hash, equals); found >= 0) return {found, false};
+        if (2 * (size_ + 1) > slots_.size()) rehash(2 * slots_.size());
+        place(hash, id);
+        ++size_;
+        return {id, true};
+    }
+
+private:
+    struct Slot {
+        std::uint64_t hash = 0;
+        std::int32_t id = -1;
+    };
+
+    static std::size_t capacity_for(std::size_t n) {
+        std::size_t c = 16;
+        while (c < 2 * n) c *= 2;
+        return c;
+    }
+    void place(std::uint64_t hash, std::int32_t id) {
+        std::size_t i = hash & mask_;
+        while (slots_[i].id >= 0) i = (i + 1) & mask_;
+        slots_[i] = {hash, id};
+    }
+    void rehash(std::size_t capacity) {
+        std::vector<Slot> old = std::move(slots_);
+        slots_.assign(capacity, Slot{});
+        mask_ = capacity - 1;
+        for (const Slot& s : old)
+            if (s.id >= 0) place(s.hash, s.id);
+    }
+
+    std::vector<Slot> slots_;
+    std::size_t mask_ = 0;
+    std::size_t size_ = 0;
+};
+
+}  // namespace dualhex::detail
