@@ -4,7 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "dualhex/topology/id_hash_table.hpp"
 
 namespace dualhex {
 namespace {
@@ -41,23 +40,39 @@ CellComplex::CellComplex(std::vector<LatticePoint> positions, std::vector<std::u
 }
 
 void CellComplex::derive_edges() {
-    // One edge per unordered consecutive pair, welded through a flat hash table keyed on
-    // the packed (min, max) vertex pair.
-    face_edges_.assign(face_loops_.size(), EdgeHandle{});
-    edge_vertices_.clear();
-    detail::IdHashTable table(face_loops_.size() / 2 + 1);
-    for (std::size_t f = 0; f < n_faces(); ++f) {
+    // Bucket every face side by its smaller endpoint (a counting sort), then dedupe the few
+    // larger endpoints within each bucket. Cache-friendly, unlike one big hash table, and
+    // it numbers edges by their smaller endpoint, deterministically.
+    const std::size_t n_corners = face_loops_.size();
+    std::vector<std::uint32_t> bucket(positions_.size() + 1, 0);
+    std::vector<VertexHandle> other(n_corners);
+    std::vector<std::uint32_t> corner_of(n_corners);
+    auto side = [&](std::size_t f, std::uint32_t i) {
         const std::uint32_t begin = face_offsets_[f], n = face_offsets_[f + 1] - begin;
-        for (std::uint32_t i = 0; i < n; ++i) {
-            VertexHandle a = face_loops_[begin + i], b = face_loops_[begin + (i + 1) % n];
-            if (b < a) std::swap(a, b);
-            const std::uint64_t key = (static_cast<std::uint64_t>(a.idx) << 32) | static_cast<std::uint32_t>(b.idx);
-            const auto id = static_cast<std::int32_t>(edge_vertices_.size());
-            const auto [found, inserted] = table.insert(detail::mix64(key), id, [&](std::int32_t e) {
-                return edge_vertices_[static_cast<std::size_t>(e)] == std::array<VertexHandle, 2>{a, b};
-            });
-            if (inserted) edge_vertices_.push_back({a, b});
-            face_edges_[begin + i] = EdgeHandle(found);
+        VertexHandle a = face_loops_[begin + i], b = face_loops_[begin + (i + 1) % n];
+        return a < b ? std::pair{a, b} : std::pair{b, a};
+    };
+    for (std::size_t f = 0; f < n_faces(); ++f)
+        for (std::uint32_t i = 0; i < face_offsets_[f + 1] - face_offsets_[f]; ++i) ++bucket[side(f, i).first.index() + 1];
+    for (std::size_t v = 0; v < positions_.size(); ++v) bucket[v + 1] += bucket[v];
+    std::vector<std::uint32_t> cursor(bucket.begin(), bucket.end() - 1);
+    for (std::size_t f = 0; f < n_faces(); ++f)
+        for (std::uint32_t i = 0; i < face_offsets_[f + 1] - face_offsets_[f]; ++i) {
+            const auto [a, b] = side(f, i);
+            const std::uint32_t slot = cursor[a.index()]++;
+            other[slot] = b;
+            corner_of[slot] = face_offsets_[f] + i;
+        }
+
+    face_edges_.assign(n_corners, EdgeHandle{});
+    edge_vertices_.clear();
+    for (std::size_t a = 0; a < positions_.size(); ++a) {
+        const std::size_t first_edge = edge_vertices_.size();
+        for (std::uint32_t s = bucket[a]; s < bucket[a + 1]; ++s) {
+            std::size_t e = first_edge;
+            while (e < edge_vertices_.size() && edge_vertices_[e][1] != other[s]) ++e;
+            if (e == edge_vertices_.size()) edge_vertices_.push_back({VertexHandle(a), other[s]});
+            face_edges_[corner_of[s]] = EdgeHandle(e);
         }
     }
 }

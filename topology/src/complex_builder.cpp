@@ -103,8 +103,13 @@ CellHandle ComplexBuilder::add_cell_from_loops(const std::vector<std::vector<Lat
     return add_cell(cell_scratch_);
 }
 
-CellComplex ComplexBuilder::build() const {
+CellComplex ComplexBuilder::build() const& {
     return CellComplex(positions_, face_offsets_, face_loops_, cell_offsets_, cell_halffaces_);
+}
+
+CellComplex ComplexBuilder::build() && {
+    return CellComplex(std::move(positions_), std::move(face_offsets_), std::move(face_loops_), std::move(cell_offsets_),
+                       std::move(cell_halffaces_));
 }
 
 }  // namespace dualhex

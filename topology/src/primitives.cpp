@@ -23,12 +23,13 @@ CellComplex make_box(const LatticePoint& origin, std::array<int, 3> n, std::int6
     if (n[0] <= 0 || n[1] <= 0 || n[2] <= 0 || size <= 0) throw std::invalid_argument("make_box: non-positive extent");
     const auto cells = static_cast<std::size_t>(n[0]) * static_cast<std::size_t>(n[1]) * static_cast<std::size_t>(n[2]);
     ComplexBuilder builder;
-    builder.reserve(cells + 3 * cells / static_cast<std::size_t>(std::min({n[0], n[1], n[2]})) + 8, 3 * cells + cells, cells);
+    const auto m = [&](int a) { return static_cast<std::size_t>(n[a]); };
+    builder.reserve((m(0) + 1) * (m(1) + 1) * (m(2) + 1), 3 * cells + m(0) * m(1) + m(1) * m(2) + m(0) * m(2), cells);
     for (int i = 0; i < n[0]; ++i)
         for (int j = 0; j < n[1]; ++j)
             for (int k = 0; k < n[2]; ++k)
                 builder.add_cell_from_loops(cube_loops(origin + LatticePoint{i * size, j * size, k * size}, size));
-    return builder.build();
+    return std::move(builder).build();
 }
 
 }  // namespace dualhex

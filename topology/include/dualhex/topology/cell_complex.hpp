@@ -6,7 +6,8 @@
 //   - faces: CSR vertex loops; face_edges(f)[i] is the edge from loop[i] to loop[i+1];
 //   - cells: CSR lists of HalfFaceHandle;
 //   - edges: derived at construction, the unique unordered vertex pairs appearing
-//     consecutively in some face loop (numbered in order of first appearance).
+//     consecutively in some face loop (numbered by smaller endpoint, then by
+//     first appearance).
 //
 // Orientation convention: a cell lists each of its faces as the half-face whose vertex
 // loop is counter-clockwise seen from outside the cell, i.e. whose right-hand-rule

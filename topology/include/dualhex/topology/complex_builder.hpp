@@ -46,7 +46,9 @@ public:
     [[nodiscard]] std::size_t n_cells() const { return cell_offsets_.size() - 1; }
 
     /// The complex built so far (the builder stays usable).
-    [[nodiscard]] CellComplex build() const;
+    [[nodiscard]] CellComplex build() const&;
+    /// The complex, moving the arrays out (the builder is left empty-ish: do not reuse).
+    [[nodiscard]] CellComplex build() &&;
 
 private:
     std::vector<LatticePoint> positions_;

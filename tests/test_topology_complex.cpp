@@ -1,0 +1,175 @@
+// CellComplex, ComplexBuilder, Incidence, links, the dual and histograms on small
+// reference complexes (single cube, 2x2x2 and 3x3x3 blocks).
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "dualhex/topology/complex_builder.hpp"
+#include "dualhex/topology/dual.hpp"
+#include "dualhex/topology/histograms.hpp"
+#include "dualhex/topology/link.hpp"
+#include "dualhex/topology/primitives.hpp"
+#include "dualhex/topology/validation.hpp"
+
+namespace dualhex {
+namespace {
+
+VertexHandle vertex_at(const CellComplex& k, LatticePoint p) {
+    for (std::size_t i = 0; i < k.n_vertices(); ++i)
+        if (k.position(VertexHandle(i)) == p) return VertexHandle(i);
+    return {};
+}
+
+// 8 x the centroid of a cell's distinct vertices (exact).
+LatticePoint centroid8(const CellComplex& k, CellHandle c) {
+    std::vector<VertexHandle> vs;
+    for (HalfFaceHandle h : k.cell_halffaces(c))
+        for (VertexHandle v : k.face_vertices(h.face())) vs.push_back(v);
+    std::sort(vs.begin(), vs.end());
+    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+    LatticePoint s;
+    for (VertexHandle v : vs) s = s + k.position(v) * (8 / static_cast<std::int64_t>(vs.size()));
+    return s;
+}
+
+std::int64_t det(LatticePoint a, LatticePoint b, LatticePoint c) {
+    return a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+}
+
+// Every corner of every hex has a positive Jacobian sign with dual vertices at centroids.
+void expect_positive_hexes(const CellComplex& k, const HexMesh& mesh) {
+    static constexpr int kNbr[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
+                                       {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+    for (const auto& hex : mesh.hexes)
+        for (int i = 0; i < 8; ++i) {
+            const LatticePoint p = centroid8(k, hex[i]);
+            EXPECT_GT(det(centroid8(k, hex[kNbr[i][0]]) - p, centroid8(k, hex[kNbr[i][1]]) - p,
+                          centroid8(k, hex[kNbr[i][2]]) - p),
+                      0);
+        }
+}
+
+TEST(TopologyBuilder, WeldsVerticesByKey) {
+    ComplexBuilder b;
+    const VertexHandle a = b.add_vertex({1, 2, 3});
+    EXPECT_EQ(b.add_vertex({1, 2, 3}), a);
+    EXPECT_NE(b.add_vertex({1, 2, 4}), a);
+    EXPECT_EQ(b.find_vertex({1, 2, 3}), a);
+    EXPECT_FALSE(b.find_vertex({9, 9, 9}).valid());
+    EXPECT_EQ(b.n_vertices(), 2u);
+}
+
+TEST(TopologyBuilder, DedupesFacesInBothOrientations) {
+    ComplexBuilder b;
+    const VertexHandle v0 = b.add_vertex({0, 0, 0}), v1 = b.add_vertex({1, 0, 0}), v2 = b.add_vertex({1, 1, 0}),
+                       v3 = b.add_vertex({0, 1, 0});
+    const HalfFaceHandle h = b.add_face({v1, v2, v3, v0});
+    EXPECT_EQ(h.side(), 0);
+    EXPECT_EQ(b.add_face({v3, v0, v1, v2}), h);             // rotated
+    EXPECT_EQ(b.add_face({v0, v3, v2, v1}), h.opposite());  // reversed
+    EXPECT_EQ(b.add_face({v2, v1, v0, v3}), h.opposite());  // reversed and rotated
+    const HalfFaceHandle other = b.add_face({v0, v1, v3, v2});  // same vertices, other cycle
+    EXPECT_NE(other.face(), h.face());
+    EXPECT_EQ(b.n_faces(), 2u);
+
+    b.add_cell(std::vector<HalfFaceHandle>{h.opposite()});
+    const CellComplex k = b.build();
+    const auto loop = k.halfface_vertices(h.opposite());
+    const auto fwd = k.halfface_vertices(h);
+    ASSERT_EQ(loop.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(loop[i], fwd[(4 - i) % 4]);
+    EXPECT_EQ(k.n_edges(), 6u);  // 4 sides + 2 diagonals from the second face
+}
+
+TEST(TopologyBuilder, RejectsUnknownHandles) {
+    ComplexBuilder b;
+    EXPECT_THROW(b.add_face({VertexHandle(0)}), std::invalid_argument);
+    EXPECT_THROW(b.add_cell(std::vector<HalfFaceHandle>{HalfFaceHandle(3)}), std::invalid_argument);
+}
+
+TEST(TopologyComplex, SingleCube) {
+    const CellComplex k = make_box({0, 0, 0}, {1, 1, 1});
+    EXPECT_EQ(k.n_vertices(), 8u);
+    EXPECT_EQ(k.n_edges(), 12u);
+    EXPECT_EQ(k.n_faces(), 6u);
+    EXPECT_EQ(k.n_cells(), 1u);
+    const ValidationReport r = validate(k);
+    EXPECT_TRUE(r.ok());
+    EXPECT_EQ(r.checked_vertices, 0u);
+    EXPECT_EQ(euler_characteristic(k), 1);
+    EXPECT_EQ(face_size_histogram(k), (std::map<int, std::size_t>{{4, 6}}));
+    const Incidence inc(k);
+    for (std::size_t f = 0; f < 6; ++f) EXPECT_TRUE(inc.is_boundary(FaceHandle(f)));
+    EXPECT_EQ(count_dual(k).interior_vertices, 0u);
+}
+
+TEST(TopologyComplex, Block2x2x2) {
+    const CellComplex k = make_box({0, 0, 0}, {2, 2, 2});
+    EXPECT_EQ(k.n_vertices(), 27u);
+    EXPECT_EQ(k.n_cells(), 8u);
+    EXPECT_EQ(euler_characteristic(k), 1);
+    const Incidence inc(k);
+    const VertexHandle centre = vertex_at(k, {1, 1, 1});
+    ASSERT_TRUE(centre.valid());
+    EXPECT_FALSE(inc.is_boundary(centre));
+    EXPECT_EQ(inc.vertex_edges(centre).size(), 6u);
+    EXPECT_EQ(inc.vertex_cells(centre).size(), 8u);
+    for (EdgeHandle e : inc.vertex_edges(centre)) {
+        EXPECT_FALSE(inc.is_boundary(e));
+        EXPECT_EQ(inc.edge_cells(e).size(), 4u);
+        EXPECT_EQ(inc.edge_faces(e).size(), 4u);
+    }
+    EXPECT_TRUE(vertex_link(k, inc, centre).is_octahedron());
+    EXPECT_TRUE(vertex_link(k, inc, vertex_at(k, {0, 0, 0})).vertices.size() == 3u);
+    EXPECT_FALSE(vertex_link(k, inc, vertex_at(k, {0, 0, 0})).is_octahedron());
+    const ValidationReport r = validate(k);
+    EXPECT_TRUE(r.ok());
+    EXPECT_EQ(r.checked_vertices, 1u);
+    EXPECT_EQ(r.checked_edges, 6u);  // the 6 spokes at the centre are interior edges
+    const DualResult dual = interior_dual(k);
+    EXPECT_TRUE(dual.errors.empty());
+    ASSERT_EQ(dual.mesh.hexes.size(), 1u);
+    expect_positive_hexes(k, dual.mesh);
+}
+
+TEST(TopologyComplex, Block3x3x3) {
+    const CellComplex k = make_box({0, 0, 0}, {3, 3, 3});
+    EXPECT_EQ(euler_characteristic(k), 1);
+    const Incidence inc(k);
+    std::size_t interior = 0;
+    for (std::size_t i = 0; i < k.n_vertices(); ++i) {
+        const VertexHandle v(i);
+        const LatticePoint p = k.position(v);
+        const bool inner = p.x > 0 && p.x < 3 && p.y > 0 && p.y < 3 && p.z > 0 && p.z < 3;
+        EXPECT_EQ(inc.is_boundary(v), !inner);
+        if (!inner) continue;
+        ++interior;
+        EXPECT_EQ(inc.vertex_edges(v).size(), 6u);
+        EXPECT_TRUE(vertex_link(k, inc, v).is_octahedron());
+        EXPECT_FALSE(dual_cube_defect(k, inc, v).has_value());
+    }
+    EXPECT_EQ(interior, 8u);
+    const ValidationReport r = validate(k);
+    EXPECT_TRUE(r.ok());
+    EXPECT_EQ(r.checked_vertices, 8u);
+    EXPECT_EQ(r.checked_edges, 12u + 8u * 3u);  // centre-cube edges + spokes to the boundary
+    const DualResult dual = interior_dual(k, inc);
+    EXPECT_TRUE(dual.errors.empty());
+    EXPECT_EQ(dual.mesh.hexes.size(), 8u);
+    expect_positive_hexes(k, dual.mesh);
+    EXPECT_EQ(interior_dual_edge_valence_histogram(k, inc), (std::map<int, std::size_t>{{4, 6}}));
+}
+
+TEST(TopologyComplex, BuildsLargeBoxesQuickly) {
+    const auto start = std::chrono::steady_clock::now();
+    const CellComplex k = make_box({0, 0, 0}, {70, 70, 70});  // 343000 cells
+    const Incidence inc(k);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(k.n_cells(), 343000u);
+    EXPECT_EQ(euler_characteristic(k), 1);
+    std::cout << "built + incidence for 343000 cells in " << seconds << " s\n";
+    EXPECT_LT(seconds, 5.0);  // generous: shared CI machines; typically well under 1 s
+}
+
+}  // namespace
+}  // namespace dualhex
