@@ -9,25 +9,6 @@ namespace {
 
 std::uint64_t point_hash(const LatticePoint& p) { return LatticePointHash{}(p); }
 
-// A loop's canonical form: start at its smallest vertex and walk towards the smaller of
-// that vertex's two neighbours. Equal for all rotations and both directions of a loop.
-struct Canonical {
-    std::size_t start = 0;
-    bool forward = true;
-};
-
-Canonical canonical(std::span<const VertexHandle> loop) {
-    const std::size_t n = loop.size();
-    const auto start = static_cast<std::size_t>(std::min_element(loop.begin(), loop.end()) - loop.begin());
-    const bool forward = n < 3 || loop[(start + 1) % n] <= loop[(start + n - 1) % n];
-    return {start, forward};
-}
-
-VertexHandle walk(std::span<const VertexHandle> loop, std::size_t start, bool forward, std::size_t k) {
-    const std::size_t n = loop.size();
-    return loop[forward ? (start + k) % n : (start + n - k % n) % n];
-}
-
 }  // namespace
 
 void ComplexBuilder::reserve(std::size_t n_vertices, std::size_t n_faces, std::size_t n_cells) {
@@ -41,10 +22,14 @@ void ComplexBuilder::reserve(std::size_t n_vertices, std::size_t n_faces, std::s
 }
 
 VertexHandle ComplexBuilder::add_vertex(const LatticePoint& p) {
+    const std::uint64_t hash = point_hash(p);
+    CachedVertex& cached = vertex_cache_[(hash >> 20) & (kVertexCacheSize - 1)];
+    if (cached.id >= 0 && cached.p == p) return VertexHandle(cached.id);
     const auto id = static_cast<std::int32_t>(positions_.size());
     const auto [found, inserted] = vertex_table_.insert(
-        point_hash(p), id, [&](std::int32_t v) { return positions_[static_cast<std::size_t>(v)] == p; });
+        hash, id, [&](std::int32_t v) { return positions_[static_cast<std::size_t>(v)] == p; });
     if (inserted) positions_.push_back(p);
+    cached = {p, found};
     return VertexHandle(found);
 }
 
@@ -58,29 +43,38 @@ HalfFaceHandle ComplexBuilder::add_face(std::span<const VertexHandle> loop) {
         if (!v.valid() || v.index() >= positions_.size())
             throw std::invalid_argument("ComplexBuilder::add_face: unknown vertex " + std::to_string(v.idx));
 
+    // Both walks of the loop from its smallest vertex; the canonical one (hashed) heads
+    // towards the smaller neighbour, so all rotations and both directions hash alike.
     const std::size_t n = loop.size();
-    const Canonical c = canonical(loop);
+    const auto start = static_cast<std::size_t>(std::min_element(loop.begin(), loop.end()) - loop.begin());
+    forward_.resize(n);
+    backward_.resize(n);
+    for (std::size_t k = 0, i = start, j = start; k < n; ++k) {
+        forward_[k] = loop[i];
+        backward_[k] = loop[j];
+        i = i + 1 == n ? 0 : i + 1;
+        j = j == 0 ? n - 1 : j - 1;
+    }
+    const std::vector<VertexHandle>& canon = n < 3 || forward_[1] <= backward_[1] ? forward_ : backward_;
     std::uint64_t hash = detail::mix64(n);
-    for (std::size_t k = 0; k < n; ++k) hash = detail::mix64(hash ^ static_cast<std::uint64_t>(walk(loop, c.start, c.forward, k).idx));
+    for (VertexHandle v : canon) hash = detail::mix64(hash ^ static_cast<std::uint64_t>(v.idx));
 
     // The stored loop is the given one rotated to start at its smallest vertex; a later
     // equal loop matches it walking forward (side 0) or backward (side 1).
-    auto matches = [&](std::int32_t face, bool forward) {
+    auto matches = [&](std::int32_t face, const std::vector<VertexHandle>& walk) {
         const std::uint32_t begin = face_offsets_[static_cast<std::size_t>(face)];
-        if (face_offsets_[static_cast<std::size_t>(face) + 1] - begin != n) return false;
-        for (std::size_t k = 0; k < n; ++k)
-            if (face_loops_[begin + k] != walk(loop, c.start, forward, k)) return false;
-        return true;
+        return face_offsets_[static_cast<std::size_t>(face) + 1] - begin == n &&
+               std::equal(walk.begin(), walk.end(), face_loops_.begin() + begin);
     };
     const auto id = static_cast<std::int32_t>(n_faces());
     const auto [found, inserted] =
-        face_table_.insert(hash, id, [&](std::int32_t f) { return matches(f, true) || matches(f, false); });
+        face_table_.insert(hash, id, [&](std::int32_t f) { return matches(f, forward_) || matches(f, backward_); });
     if (inserted) {
-        for (std::size_t k = 0; k < n; ++k) face_loops_.push_back(walk(loop, c.start, true, k));
+        face_loops_.insert(face_loops_.end(), forward_.begin(), forward_.end());
         face_offsets_.push_back(static_cast<std::uint32_t>(face_loops_.size()));
         return HalfFaceHandle(FaceHandle(found), 0);
     }
-    return HalfFaceHandle(FaceHandle(found), matches(found, true) ? 0 : 1);
+    return HalfFaceHandle(FaceHandle(found), matches(found, forward_) ? 0 : 1);
 }
 
 CellHandle ComplexBuilder::add_cell(std::span<const HalfFaceHandle> halffaces) {

@@ -57,8 +57,16 @@ private:
     std::vector<std::uint32_t> cell_offsets_{0};
     std::vector<HalfFaceHandle> cell_halffaces_;
     detail::IdHashTable vertex_table_;
+    // Direct-mapped cache of recent welds in front of vertex_table_: neighbouring cells
+    // repeat most of their points, and the cache stays in L2 while the table does not.
+    struct CachedVertex {
+        LatticePoint p;
+        std::int32_t id = -1;
+    };
+    static constexpr std::size_t kVertexCacheSize = 4096;
+    std::vector<CachedVertex> vertex_cache_ = std::vector<CachedVertex>(kVertexCacheSize);
     detail::IdHashTable face_table_;
-    std::vector<VertexHandle> scratch_;
+    std::vector<VertexHandle> scratch_, forward_, backward_;
     std::vector<HalfFaceHandle> cell_scratch_;
 };
 

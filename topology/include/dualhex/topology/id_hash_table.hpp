@@ -2,7 +2,8 @@
 // A flat open-addressing hash set of int32 ids (linear probing). The keys live elsewhere
 // (in the caller's flat arrays), so the table stores only (hash, id) and asks the caller
 // whether a stored id equals the probe. This is what lets the builder weld vertices and
-// dedupe faces without a per-key heap allocation.
+// dedupe faces without a per-key heap allocation. A slot is 8 bytes: the id and the high
+// 32 bits of the hash, which also pick the slot (so rehashing needs no callback).
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -27,10 +28,11 @@ public:
     /// The stored id with this hash for which `equals(id)` holds, or -1.
     template <class Eq>
     [[nodiscard]] std::int32_t find(std::uint64_t hash, Eq&& equals) const {
-        for (std::size_t i = hash & mask_;; i = (i + 1) & mask_) {
+        const auto tag = static_cast<std::uint32_t>(hash >> 32);
+        for (std::size_t i = tag & mask_;; i = (i + 1) & mask_) {
             const Slot& s = slots_[i];
             if (s.id < 0) return -1;
-            if (s.hash == hash && equals(s.id)) return s.id;
+            if (s.tag == tag && equals(s.id)) return s.id;
         }
     }
 
@@ -39,14 +41,14 @@ public:
     std::pair<std::int32_t, bool> insert(std::uint64_t hash, std::int32_t id, Eq&& equals) {
         if (const std::int32_t found = find(hash, equals); found >= 0) return {found, false};
         if (2 * (size_ + 1) > slots_.size()) rehash(2 * slots_.size());
-        place(hash, id);
+        place(static_cast<std::uint32_t>(hash >> 32), id);
         ++size_;
         return {id, true};
     }
 
 private:
     struct Slot {
-        std::uint64_t hash = 0;
+        std::uint32_t tag = 0;
         std::int32_t id = -1;
     };
 
@@ -55,17 +57,17 @@ private:
         while (c < 2 * n) c *= 2;
         return c;
     }
-    void place(std::uint64_t hash, std::int32_t id) {
-        std::size_t i = hash & mask_;
+    void place(std::uint32_t tag, std::int32_t id) {
+        std::size_t i = tag & mask_;
         while (slots_[i].id >= 0) i = (i + 1) & mask_;
-        slots_[i] = {hash, id};
+        slots_[i] = {tag, id};
     }
     void rehash(std::size_t capacity) {
         std::vector<Slot> old = std::move(slots_);
         slots_.assign(capacity, Slot{});
         mask_ = capacity - 1;
         for (const Slot& s : old)
-            if (s.id >= 0) place(s.hash, s.id);
+            if (s.id >= 0) place(s.tag, s.id);
     }
 
     std::vector<Slot> slots_;
