@@ -9,6 +9,9 @@
 //
 // Boundary: a face is boundary iff it has exactly one incident cell entry; an edge or a
 // vertex is boundary iff it lies on a boundary face. Everything else is interior.
+//
+// Lifetime: an Incidence keeps a pointer to its complex (for find_edge); the complex must
+// outlive it.
 #include <span>
 #include <vector>
 
