@@ -41,10 +41,8 @@ CellHandle clockwise_next(const CellComplex& k, const Incidence& inc, EdgeHandle
     return {};
 }
 
-}  // namespace
-
-std::optional<std::array<CellHandle, 8>> dual_hex(const CellComplex& k, const Incidence& inc, VertexHandle v) {
-    if (dual_cube_defect(k, inc, v)) return std::nullopt;
+// dual_hex without the cube check (the caller has done it).
+std::optional<std::array<CellHandle, 8>> order_cube(const CellComplex& k, const Incidence& inc, VertexHandle v) {
     const EdgeHandle bottom = inc.vertex_edges(v)[0];
     const auto [a, b] = k.edge_vertices(bottom);
     const VertexHandle w = a == v ? b : a;
@@ -63,6 +61,13 @@ std::optional<std::array<CellHandle, 8>> dual_hex(const CellComplex& k, const In
     return hex;
 }
 
+}  // namespace
+
+std::optional<std::array<CellHandle, 8>> dual_hex(const CellComplex& k, const Incidence& inc, VertexHandle v) {
+    if (dual_cube_defect(k, inc, v)) return std::nullopt;
+    return order_cube(k, inc, v);
+}
+
 DualResult interior_dual(const CellComplex& k, const Incidence& inc) {
     DualResult result;
     for (std::size_t i = 0; i < k.n_vertices(); ++i) {
@@ -70,7 +75,7 @@ DualResult interior_dual(const CellComplex& k, const Incidence& inc) {
         if (inc.is_boundary(v)) continue;
         if (auto defect = dual_cube_defect(k, inc, v)) {
             result.errors.push_back({v, *defect});
-        } else if (auto hex = dual_hex(k, inc, v)) {
+        } else if (auto hex = order_cube(k, inc, v)) {
             result.mesh.hexes.push_back(*hex);
             result.mesh.primal_vertex.push_back(v);
         } else {

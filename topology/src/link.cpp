@@ -1,7 +1,6 @@
 #include "dualhex/topology/link.hpp"
 
 #include <algorithm>
-#include <map>
 
 namespace dualhex {
 namespace {
@@ -80,20 +79,24 @@ VertexLink vertex_link(const CellComplex& k, const Incidence& inc, VertexHandle 
 bool VertexLink::is_closed_connected_surface() const {
     if (broken_cell_corners != 0 || vertices.empty()) return false;
     // Each link edge, as an unordered pair, must be distinct and bound exactly two faces.
-    std::map<std::array<int, 2>, int> uses;
+    // (Sorted vectors, not a map: this runs once per interior vertex.)
+    std::vector<std::array<int, 2>> pairs;
     for (auto [a, b] : edges) {
         if (a < 0 || b < 0 || a == b) return false;
-        if (!uses.emplace(std::array{std::min(a, b), std::max(a, b)}, 0).second) return false;
+        pairs.push_back({std::min(a, b), std::max(a, b)});
     }
+    std::sort(pairs.begin(), pairs.end());
+    if (std::adjacent_find(pairs.begin(), pairs.end()) != pairs.end()) return false;
+    std::vector<int> uses(pairs.size(), 0);
     for (const auto& face : faces)
         for (std::size_t i = 0; i < face.size(); ++i) {
             const int a = face[i], b = face[(i + 1) % face.size()];
-            const auto it = uses.find({std::min(a, b), std::max(a, b)});
-            if (it == uses.end()) return false;
-            ++it->second;
+            const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
+            const auto it = std::lower_bound(pairs.begin(), pairs.end(), key);
+            if (it == pairs.end() || *it != key) return false;
+            ++uses[static_cast<std::size_t>(it - pairs.begin())];
         }
-    for (const auto& [pair, n] : uses)
-        if (n != 2) return false;
+    if (std::any_of(uses.begin(), uses.end(), [](int n) { return n != 2; })) return false;
     // Connected through link edges.
     std::vector<int> comp(vertices.size());
     for (std::size_t i = 0; i < comp.size(); ++i) comp[i] = static_cast<int>(i);
