@@ -87,6 +87,33 @@ TEST(TopologyBuilder, RejectsUnknownHandles) {
     EXPECT_THROW(b.add_cell(std::vector<HalfFaceHandle>{HalfFaceHandle(3)}), std::invalid_argument);
 }
 
+TEST(TopologyComplex, RawConstructionRejectsBadArrays) {
+    const std::vector<LatticePoint> pts{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const std::vector<VertexHandle> tri{VertexHandle(0), VertexHandle(1), VertexHandle(2)};
+    EXPECT_NO_THROW(CellComplex(pts, {0, 3}, tri, {0, 1}, {HalfFaceHandle(1)}));
+    EXPECT_THROW(CellComplex(pts, {0, 4}, tri, {0}, {}), std::invalid_argument);              // offsets past the end
+    EXPECT_THROW(CellComplex(pts, {0, 0, 3}, tri, {0}, {}), std::invalid_argument);           // empty loop
+    EXPECT_THROW(CellComplex(pts, {0, 3}, {VertexHandle(0), VertexHandle(1), VertexHandle(7)}, {0}, {}),
+                 std::invalid_argument);                                                      // unknown vertex
+    EXPECT_THROW(CellComplex(pts, {0, 3}, tri, {0, 1}, {HalfFaceHandle(2)}), std::invalid_argument);  // unknown face
+}
+
+TEST(TopologyComplex, FaceEdgesFollowTheLoop) {
+    const CellComplex k = make_box({0, 0, 0}, {2, 1, 1});
+    EXPECT_EQ(k.n_edges(), 20u);
+    for (std::size_t f = 0; f < k.n_faces(); ++f) {
+        const auto loop = k.face_vertices(FaceHandle(f));
+        const auto edges = k.face_edges(FaceHandle(f));
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const auto [a, b] = k.edge_vertices(edges[i]);
+            EXPECT_LT(a, b);
+            const VertexHandle p = loop[i], q = loop[(i + 1) % loop.size()];
+            EXPECT_EQ(std::min(p, q), a);
+            EXPECT_EQ(std::max(p, q), b);
+        }
+    }
+}
+
 TEST(TopologyComplex, SingleCube) {
     const CellComplex k = make_box({0, 0, 0}, {1, 1, 1});
     EXPECT_EQ(k.n_vertices(), 8u);

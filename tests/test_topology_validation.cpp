@@ -286,6 +286,22 @@ TEST(TopologyValidation, FilterRestrictsInteriorChecks) {
     EXPECT_GT(r.checked_edges, 0u);
 }
 
+TEST(TopologyValidation, InteriorChecksCanBeSwitchedOff) {
+    auto cells = box_cells(3, 3, 3);
+    const std::size_t a = cube_index(0, 1, 1, 3, 3), b = cube_index(1, 1, 1, 3, 3);
+    const CellLoops merged = merge({cells[a], cells[b]});
+    cells.erase(cells.begin() + static_cast<std::ptrdiff_t>(b));
+    cells.erase(cells.begin() + static_cast<std::ptrdiff_t>(a));
+    cells.push_back(merged);
+    const CellComplex k = build(cells);
+    ValidationOptions options;
+    options.check_interior = false;
+    const ValidationReport r = validate(k, options);
+    EXPECT_TRUE(r.ok()) << dump(r, k);  // (1) and (2) hold; only valences are off
+    EXPECT_EQ(r.checked_vertices, 0u);
+    EXPECT_FALSE(validate(k).ok());
+}
+
 TEST(TopologyValidation, ReportPrintsPositions) {
     auto cells = box_cells(2, 1, 1);
     cells.push_back(cells[0]);
