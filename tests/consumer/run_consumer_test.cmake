@@ -37,6 +37,7 @@ run("${CMAKE_COMMAND}" -S "${CONSUMER_SOURCE_DIR}" -B "${build}"
     "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON")
 run("${CMAKE_COMMAND}" --build "${build}")
 run("${build}/consumer")
+run("${build}/consumer_all_layers")
 
 # The installed CLI runs too.
 run("${prefix}/bin/dualhex" --version)
