@@ -1,1 +1,0 @@
-namespace dualhex { int grid_placeholder() { return 0; } }
