@@ -123,7 +123,7 @@ int LeafGrid::max_level() const {
 
 std::string LeafGrid::describe(std::size_t n) const {
     std::string s = to_string(leaves_[n]);
-    if (line(n) > 0) s += " (" + (source_.empty() ? std::string("line ") : source_ + ":") + std::to_string(line(n)) + ")";
+    if (line(n) > 0) s += " (line " + std::to_string(line(n)) + ")";
     return s;
 }
 

@@ -4,7 +4,9 @@ namespace dualhex {
 
 namespace {
 
-GridCheck failure(std::size_t a, std::size_t b, std::string message) {
+// Grids read from a file name it first, as InputError does: "f.leaves: not paired: ...".
+GridCheck failure(const LeafGrid& grid, std::size_t a, std::size_t b, std::string message) {
+    if (!grid.source().empty()) message = grid.source() + ": " + message;
     return {false, a, b, std::move(message)};
 }
 
@@ -17,7 +19,7 @@ GridCheck is_paired(const LeafGrid& grid) {
         for (const Leaf& sibling : children(parent(leaf))) {
             if (grid.find(sibling)) continue;
             const std::size_t inside = *grid.leaf_within(sibling);  // tiling: it is subdivided
-            return failure(n, inside, "not paired: leaf " + grid.describe(n) + " has sibling " + to_string(sibling) +
+            return failure(grid, n, inside, "not paired: leaf " + grid.describe(n) + " has sibling " + to_string(sibling) +
                                           " subdivided (it contains leaf " + grid.describe(inside) + ")");
         }
     }
@@ -35,7 +37,7 @@ GridCheck is_balanced(const LeafGrid& grid, Balance mode) {
             const Leaf cell = neighbour(leaf, d);
             if (!cell.valid() || grid.find(cell) || grid.is_subdivided(cell) || grid.find(parent(cell))) continue;
             const std::size_t coarse = *grid.locate(cell);
-            return failure(n, coarse, std::string(mode == Balance::Strong ? "not strongly" : "not weakly") +
+            return failure(grid, n, coarse, std::string(mode == Balance::Strong ? "not strongly" : "not weakly") +
                                           " balanced: leaves " + grid.describe(n) + " and " + grid.describe(coarse) +
                                           " share a " + contact_name(d) + " but differ by " +
                                           std::to_string(leaf.level - grid.leaf(coarse).level) + " levels");

@@ -7,8 +7,8 @@
 //   "f.leaves:7: expected 4 fields 'L i j k', found 5 in '3 1 2 0 9'"
 //   "f.leaves:7: not an integer: 'x' in '3 x 2 0'"
 //   "f.leaves:7: invalid leaf 3 8 0 0: coordinates must be in [0, 2^3)"
-//   "f.leaves:9: duplicate leaf 3 1 2 0 (f.leaves:9), first given as 3 1 2 0 (f.leaves:4)"
-//   "f.leaves:9: overlap: leaf 3 1 1 1 (f.leaves:9) lies inside leaf 2 0 0 0 (f.leaves:3)"
+//   "f.leaves:9: duplicate leaf 3 1 2 0 (line 9), first given as 3 1 2 0 (line 4)"
+//   "f.leaves:9: overlap: leaf 3 1 1 1 (line 9) lies inside leaf 2 0 0 0 (line 3)"
 //   "f.leaves: gap: cell 2 1 0 3 (level 2) is not covered by any leaf"
 #include <filesystem>
 #include <string>

@@ -46,7 +46,7 @@ public:
     [[nodiscard]] std::vector<std::size_t> counts_per_level() const;
     [[nodiscard]] int min_level() const;
     [[nodiscard]] int max_level() const;
-    /// "L i j k" plus " (file:line)" when known: how diagnostics name a leaf.
+    /// "L i j k" plus " (line N)" when known: how diagnostics name a leaf.
     [[nodiscard]] std::string describe(std::size_t n) const;
 
 private:

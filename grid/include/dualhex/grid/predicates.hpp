@@ -14,7 +14,8 @@ struct GridCheck {
     bool ok = true;
     /// Indices (into the grid) of an offending pair; set iff !ok.
     std::optional<std::size_t> first, second;
-    /// Empty iff ok, e.g. "leaves 3 0 0 0 (f:4) and 1 1 0 0 (f:2) share a face but differ by 2 levels".
+    /// Empty iff ok, e.g. "f.leaves: not weakly balanced: leaves 3 4 4 4 (line 9) and
+    /// 1 0 1 1 (line 2) share a face but differ by 2 levels" (file only if read from one).
     std::string message;
 
     explicit operator bool() const { return ok; }
