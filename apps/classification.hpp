@@ -27,8 +27,7 @@ struct Classification {
     std::vector<ClassRow> classes;  ///< full-group classes, by representative
 };
 
-/// Computes the classification with the grid layer's code. Throws NotYetAvailable when
-/// the grid layer does not provide it yet.
+/// Computes the classification with the grid layer's code (grid/configurations.hpp).
 Classification compute_classification();
 
 }  // namespace dualhex::app

@@ -5,13 +5,9 @@
 
 #include "commands.hpp"
 
-#if __has_include("dualhex/grid/leaf_file.hpp") && __has_include("dualhex/grid/predicates.hpp") && \
-    __has_include("dualhex/grid/refinement.hpp")
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/grid/predicates.hpp"
 #include "dualhex/grid/refinement.hpp"
-#define DUALHEX_APP_HAVE_GRID 1
-#endif
 
 namespace dualhex::app {
 namespace {
@@ -25,8 +21,6 @@ struct GridOptions {
     bool weak = false;
     std::vector<std::string> require;
 };
-
-#ifdef DUALHEX_APP_HAVE_GRID
 
 Balance mode_of(const GridOptions& opt) { return opt.strong ? Balance::Strong : Balance::Weak; }
 const char* mode_name(const GridOptions& opt) { return opt.strong ? "strong" : "weak"; }
@@ -119,22 +113,6 @@ void run_pair(const GridOptions& opt) {
     report_refinement(opt, op.c_str(), in, out);
 }
 
-#else  // the grid layer's leaf-file API has not landed yet
-
-[[noreturn]] void not_yet(const char* what) {
-    throw NotYetAvailable(std::string(what) + " needs the grid layer's leaf-file API (grid/include/dualhex/grid/)");
-}
-void run_check(const GridOptions&) { not_yet("grid check"); }
-void run_balance(const GridOptions& opt) {
-    check_output(opt.output, opt.force);
-    not_yet("grid balance");
-}
-void run_pair(const GridOptions& opt) {
-    check_output(opt.output, opt.force);
-    not_yet("grid pair");
-}
-
-#endif
 
 }  // namespace
 

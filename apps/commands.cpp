@@ -2,9 +2,7 @@
 
 #include <iostream>
 
-#if __has_include("dualhex/grid/input_error.hpp")
 #include "dualhex/grid/input_error.hpp"
-#endif
 
 namespace dualhex::app {
 
@@ -37,11 +35,7 @@ void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << '\n'; }
 namespace dualhex::app {
 
 std::optional<std::string> input_error_message(const std::exception& e) {
-#if __has_include("dualhex/grid/input_error.hpp")
     if (const auto* ie = dynamic_cast<const dualhex::InputError*>(&e)) return std::string(ie->what());
-#else
-    (void)e;
-#endif
     return std::nullopt;
 }
 

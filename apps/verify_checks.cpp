@@ -7,13 +7,9 @@
 #include "commands.hpp"
 #include "dualhex/topology/cube_symmetry.hpp"
 
-#if __has_include("dualhex/grid/leaf_file.hpp") && __has_include("dualhex/topology/complex_builder.hpp") && \
-    __has_include("dualhex/topology/validation.hpp")
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/topology/complex_builder.hpp"
 #include "dualhex/topology/validation.hpp"
-#define DUALHEX_APP_HAVE_BOX_GRID 1
-#endif
 
 namespace dualhex::app {
 
@@ -81,7 +77,6 @@ void add_configuration_checks(CheckRegistry& registry) {
                   }});
 }
 
-#ifdef DUALHEX_APP_HAVE_BOX_GRID
 namespace {
 
 /// The complex of a grid whose leaves are all at one level: one hexahedron per leaf, in
@@ -103,10 +98,8 @@ CellComplex uniform_grid_complex(const LeafGrid& grid) {
 }
 
 }  // namespace
-#endif
 
 void add_grid_checks(CheckRegistry& registry) {
-#ifdef DUALHEX_APP_HAVE_BOX_GRID
     registry.add({"grid.box-complex",
                   "a uniform 4x4x4 box grid (leaf file) becomes a valid hexahedral complex (DESIGN.md section 4)", [] {
                       constexpr int kLevel = 2, kN = 1 << kLevel;
@@ -145,9 +138,6 @@ void add_grid_checks(CheckRegistry& registry) {
                                      {"checked_edges", report.checked_edges}};
                       return out;
                   }});
-#else
-    (void)registry;  // "a box grid converts to a valid complex": needs grid/ leaf files + topology/ validation
-#endif
 }
 
 CheckRegistry default_checks() {
