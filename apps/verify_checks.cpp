@@ -7,8 +7,8 @@
 #include "commands.hpp"
 #include "dualhex/topology/cube_symmetry.hpp"
 
+#include "dualhex/grid/grid_complex.hpp"
 #include "dualhex/grid/leaf_file.hpp"
-#include "dualhex/topology/complex_builder.hpp"
 #include "dualhex/topology/validation.hpp"
 
 namespace dualhex::app {
@@ -79,64 +79,53 @@ void add_configuration_checks(CheckRegistry& registry) {
 
 namespace {
 
-/// The complex of a grid whose leaves are all at one level: one hexahedron per leaf, in
-/// lattice units of that level. Faces counter-clockwise seen from outside.
-CellComplex uniform_grid_complex(const LeafGrid& grid) {
-    ComplexBuilder b;
-    for (const Leaf& leaf : grid.leaves()) {
-        auto p = [&](int dx, int dy, int dz) { return LatticePoint{leaf.i + dx, leaf.j + dy, leaf.k + dz}; };
-        b.add_cell_from_loops({
-            {p(0, 0, 0), p(0, 0, 1), p(0, 1, 1), p(0, 1, 0)},  // x = 0
-            {p(1, 0, 0), p(1, 1, 0), p(1, 1, 1), p(1, 0, 1)},  // x = 1
-            {p(0, 0, 0), p(1, 0, 0), p(1, 0, 1), p(0, 0, 1)},  // y = 0
-            {p(0, 1, 0), p(0, 1, 1), p(1, 1, 1), p(1, 1, 0)},  // y = 1
-            {p(0, 0, 0), p(0, 1, 0), p(1, 1, 0), p(1, 0, 0)},  // z = 0
-            {p(0, 0, 1), p(1, 0, 1), p(1, 1, 1), p(0, 1, 1)},  // z = 1
-        });
-    }
-    return std::move(b).build();
+/// Validates a box complex of a x b x c hexahedra: DESIGN.md section 4 plus exact counts.
+CheckOutcome check_box_complex(const CellComplex& complex, std::size_t a, std::size_t b, std::size_t c) {
+    const ValidationReport report = validate(complex);
+    const std::size_t v = (a + 1) * (b + 1) * (c + 1);
+    const std::size_t e = a * (b + 1) * (c + 1) + (a + 1) * b * (c + 1) + (a + 1) * (b + 1) * c;
+    const std::size_t f = a * b * (c + 1) + a * (b + 1) * c + (a + 1) * b * c;
+    const std::size_t interior = (a - 1) * (b - 1) * (c - 1);
+    const bool counts = complex.n_vertices() == v && complex.n_edges() == e && complex.n_faces() == f &&
+                        complex.n_cells() == a * b * c && report.checked_vertices == interior;
+    CheckOutcome out;
+    out.status = report.ok() && counts ? CheckStatus::kPass : CheckStatus::kFail;
+    out.summary = std::to_string(a) + "x" + std::to_string(b) + "x" + std::to_string(c) +
+                  ": V=" + std::to_string(complex.n_vertices()) + " E=" + std::to_string(complex.n_edges()) +
+                  " F=" + std::to_string(complex.n_faces()) + " C=" + std::to_string(complex.n_cells()) + ", " +
+                  std::to_string(report.checked_vertices) + " interior vertices, " +
+                  std::to_string(report.violations.size()) + " violations" + (counts ? "" : ", WRONG COUNTS");
+    if (!report.violations.empty()) out.summary += "; first: " + report.violations.front().message;
+    out.details = {{"box", {a, b, c}},
+                   {"vertices", complex.n_vertices()},
+                   {"edges", complex.n_edges()},
+                   {"faces", complex.n_faces()},
+                   {"cells", complex.n_cells()},
+                   {"violations", report.violations.size()},
+                   {"checked_vertices", report.checked_vertices},
+                   {"checked_edges", report.checked_edges}};
+    return out;
 }
 
 }  // namespace
 
 void add_grid_checks(CheckRegistry& registry) {
     registry.add({"grid.box-complex",
-                  "a uniform 4x4x4 box grid (leaf file) becomes a valid hexahedral complex (DESIGN.md section 4)", [] {
+                  "a uniform 4x4x4 grid read as a leaf file becomes a valid hexahedral complex (DESIGN.md section 4)",
+                  [] {
                       constexpr int kLevel = 2, kN = 1 << kLevel;
-                      std::string text = "# uniform box grid, level 2\n";
+                      std::string text = "# uniform grid, level 2\n";
                       for (int i = 0; i < kN; ++i)
                           for (int j = 0; j < kN; ++j)
                               for (int k = 0; k < kN; ++k)
                                   text += std::to_string(kLevel) + " " + std::to_string(i) + " " + std::to_string(j) +
                                           " " + std::to_string(k) + "\n";
-                      const LeafGrid grid = parse_leaves(text, "<box grid>");
-                      const CellComplex complex = uniform_grid_complex(grid);
-                      const ValidationReport report = validate(complex);
-                      // (n+1)^3 vertices, 3n(n+1)^2 edges, 3n^2(n+1) faces, n^3 cells.
-                      const std::size_t n = kN, v = (n + 1) * (n + 1) * (n + 1), e = 3 * n * (n + 1) * (n + 1),
-                                        f = 3 * n * n * (n + 1);
-                      const bool counts = complex.n_vertices() == v && complex.n_edges() == e &&
-                                          complex.n_faces() == f && complex.n_cells() == n * n * n;
-                      CheckOutcome out;
-                      out.status = report.ok() && counts ? CheckStatus::kPass : CheckStatus::kFail;
-                      out.summary = std::to_string(grid.size()) + " leaves -> V=" +
-                                    std::to_string(complex.n_vertices()) + " E=" + std::to_string(complex.n_edges()) +
-                                    " F=" + std::to_string(complex.n_faces()) +
-                                    " C=" + std::to_string(complex.n_cells()) + ", " +
-                                    std::to_string(report.violations.size()) + " violations, " +
-                                    std::to_string(report.checked_vertices) + " interior vertices checked" +
-                                    (counts ? "" : ", WRONG COUNTS");
-                      if (!report.violations.empty())
-                          out.summary += "; first: " + report.violations.front().message;
-                      out.details = {{"leaves", grid.size()},
-                                     {"vertices", complex.n_vertices()},
-                                     {"edges", complex.n_edges()},
-                                     {"faces", complex.n_faces()},
-                                     {"cells", complex.n_cells()},
-                                     {"violations", report.violations.size()},
-                                     {"checked_vertices", report.checked_vertices},
-                                     {"checked_edges", report.checked_edges}};
-                      return out;
+                      const LeafGrid grid = parse_leaves(text, "<uniform grid>");
+                      return check_box_complex(box_to_complex(grid), kN, kN, kN);
+                  }});
+    registry.add({"grid.sub-box-complex", "a 3x2x5 box of level-3 leaves becomes a valid hexahedral complex", [] {
+                      const auto leaves = leaf_box(3, {1, 4, 2}, {4, 6, 7});
+                      return check_box_complex(leaves_to_complex(leaves), 3, 2, 5);
                   }});
 }
 
