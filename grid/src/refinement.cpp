@@ -10,30 +10,37 @@ namespace {
 
 using detail::Octree;
 
-// Ripple balancing seeded with `work`. Each split is forced by a leaf two or more levels
-// finer in contact, so no unnecessary refinement is introduced.
-void ripple_balance(Octree& tree, std::vector<Leaf> work, Balance mode) {
+// Balanced (for `mode`) iff every interior node's same-level neighbours through the
+// constrained contacts are nodes too (not strictly inside a leaf): the leaves inside an
+// interior node P are at level >= level(P)+1 and touch each neighbour of P through the
+// same kind of contact. So: visit interior nodes finest level first and split the leaf
+// covering each missing neighbour down to that neighbour. Splits create interior nodes
+// only at coarser levels, which are visited later; every split is forced, so the result
+// is the least balanced refinement. One pass over interior nodes (~1/7 of the leaves).
+void balance_tree(Octree& tree, Balance mode) {
     const auto offsets = neighbour_offsets(mode);
-    while (!work.empty()) {
-        const Leaf leaf = work.back();
-        work.pop_back();
-        if (leaf.level < 2 || !tree.is_leaf(leaf)) continue;  // split since queued: children queued
-        for (const Offset& d : offsets) {
-            const Leaf cell = neighbour(leaf, d);
-            if (!cell.valid()) continue;
-            for (auto coarse = tree.covering_leaf(cell); coarse && coarse->level < leaf.level - 1;
-                 coarse = tree.covering_leaf(cell)) {
-                tree.split(*coarse);
-                for (const Leaf& child : children(*coarse)) work.push_back(child);
+    std::vector<std::vector<Leaf>> by_level(kMaxLevel + 1);
+    for (const Leaf& node : tree.interior_nodes()) by_level[static_cast<std::size_t>(node.level)].push_back(node);
+    for (int level = kMaxLevel; level >= 1; --level) {
+        const auto& bucket = by_level[static_cast<std::size_t>(level)];  // only coarser buckets grow
+        for (std::size_t n = 0; n < bucket.size(); ++n) {
+            for (const Offset& d : offsets) {
+                const Leaf cell = neighbour(bucket[n], d);
+                if (!cell.valid()) continue;
+                for (auto cover = tree.covering_leaf(cell); cover && cover->level < level;
+                     cover = tree.covering_leaf(cell)) {
+                    tree.split(*cover);
+                    by_level[static_cast<std::size_t>(cover->level)].push_back(*cover);
+                }
             }
         }
     }
 }
 
-// One pairing pass; returns the new leaves. Splitting the leaf children of a mixed node
+// One pairing pass; returns whether it split anything. Splitting the leaf children of a mixed node
 // makes that node all-interior and creates only all-leaf nodes, so one pass suffices.
-std::vector<Leaf> pairing_pass(Octree& tree) {
-    std::vector<Leaf> created;
+bool pairing_pass(Octree& tree) {
+    bool changed = false;
     for (const Leaf& node : tree.interior_nodes()) {
         const auto kids = children(node);
         bool any_leaf = false, any_interior = false;
@@ -42,17 +49,17 @@ std::vector<Leaf> pairing_pass(Octree& tree) {
         for (const Leaf& c : kids) {
             if (!tree.is_leaf(c)) continue;
             tree.split(c);
-            for (const Leaf& g : children(c)) created.push_back(g);
+            changed = true;
         }
     }
-    return created;
+    return changed;
 }
 
 }  // namespace
 
 LeafGrid balance(const LeafGrid& grid, Balance mode) {
     Octree tree(grid);
-    ripple_balance(tree, tree.leaves(), mode);
+    balance_tree(tree, mode);
     return tree.to_grid();
 }
 
@@ -64,10 +71,8 @@ LeafGrid pair_only(const LeafGrid& grid) {
 
 LeafGrid pair(const LeafGrid& grid, Balance mode) {
     Octree tree(grid);
-    ripple_balance(tree, tree.leaves(), mode);
-    // After the first full balance only leaves created by pairing can break balance.
-    for (auto created = pairing_pass(tree); !created.empty(); created = pairing_pass(tree))
-        ripple_balance(tree, std::move(created), mode);
+    do balance_tree(tree, mode);
+    while (pairing_pass(tree));
     return tree.to_grid();
 }
 

@@ -10,9 +10,10 @@
 
 namespace dualhex {
 
-/// The least refinement that is strongly (or weakly) balanced. Ripple algorithm: a work
-/// list of leaves; a leaf whose same-level neighbour lies in a leaf >= 2 levels coarser
-/// splits that leaf (repeatedly) and queues the new children.
+/// The least refinement that is strongly (or weakly) balanced. Level-by-level ripple:
+/// interior nodes, finest level first, force their same-level neighbours (26 for Strong,
+/// 6 face neighbours for Weak) to exist by splitting the leaf covering them; the split
+/// nodes are queued at their (coarser) level.
 [[nodiscard]] LeafGrid balance(const LeafGrid& grid, Balance mode);
 
 /// The least refinement that is paired (every leaf's 7 siblings are leaves): a node with
