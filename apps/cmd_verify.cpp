@@ -1,4 +1,5 @@
 // dualhex verify: runs every registered check, prints a PASS/FAIL table (or JSON).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -29,6 +30,9 @@ bool selected(const std::string& name, const std::vector<std::string>& only) {
 
 void run_verify(const VerifyOptions& opt) {
     const CheckRegistry registry = default_checks();
+    const bool any = std::any_of(registry.checks().begin(), registry.checks().end(),
+                                 [&](const Check& c) { return selected(c.name, opt.only); });
+    if (!any) throw UsageError("verify: no check matches --only (see dualhex verify --list)");
     if (opt.list) {
         nlohmann::json list = nlohmann::json::array();
         for (const auto& c : registry.checks()) {

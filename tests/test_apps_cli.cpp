@@ -126,6 +126,21 @@ TEST_F(Cli, VerifyJsonListsChecksAndPasses) {
     EXPECT_TRUE(saw_symmetry) << r.out;
 }
 
+TEST_F(Cli, VerifyOnlyAndList) {
+    const Result list = run({"verify", "--list", "--json"});
+    ASSERT_EQ(list.rc, 0) << list.err;
+    const auto checks = nlohmann::json::parse(list.out).at("checks");
+    ASSERT_GE(checks.size(), 4u);
+    for (const auto& c : checks) {
+        const auto name = c.at("name").get<std::string>();
+        const Result one = run({"verify", "--json", "--only", name});
+        ASSERT_EQ(one.rc, 0) << name << ": " << one.out << one.err;
+        const auto j = nlohmann::json::parse(one.out);
+        EXPECT_GE(j.at("checks").size(), 1u);
+        EXPECT_EQ(j.at("failed").get<int>(), 0);
+    }
+}
+
 TEST_F(Cli, VerifyTableHasSummary) {
     const Result r = run({"verify"});
     EXPECT_EQ(r.rc, 0) << r.out << r.err;
@@ -144,6 +159,7 @@ TEST_F(Cli, BadUsageExits2) {
     EXPECT_EQ(run({"grid", "pair", in.string()}).rc, 2);                        // -o missing
     EXPECT_EQ(run({"grid", "balance", in.string(), "-o", (dir_ / "o").string()}).rc, 2);  // no mode
     EXPECT_EQ(run({"grid", "balance", in.string(), "--strong", "--weak", "-o", (dir_ / "o").string()}).rc, 2);
+    EXPECT_EQ(run({"verify", "--only", "no-such-check"}).rc, 2);
     const Result r = run({"verify", "--bogus"});
     EXPECT_EQ(r.rc, 2);
     EXPECT_TRUE(r.out.empty()) << r.out;  // errors go to stderr
