@@ -9,6 +9,9 @@ int main(int argc, char** argv) {
     CLI::App app{"dualhex: optimal dual schemes for adaptive-grid hexmeshing"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "dualhex 0.1.0");
+    app.footer(
+        "Exit codes: 0 success, 1 a check failed, 2 usage error (or output exists without --force),\n"
+        "3 input error (error: <file>:<line>: <message>), 4 internal error.");
     register_classify(app);
     register_grid(app);
     register_verify(app);
