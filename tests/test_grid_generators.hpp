@@ -31,7 +31,7 @@ inline rc::Gen<SplitTree> gen_split_tree(int depth) {
     auto split = rc::gen::build<SplitTree>(
         rc::gen::set(&SplitTree::kids, rc::gen::container<std::vector<SplitTree>>(8, gen_split_tree(depth - 1))));
     // Leaf first: RapidCheck shrinks weightedOneOf towards earlier alternatives.
-    return rc::gen::weightedOneOf<SplitTree>({{3, rc::gen::just(SplitTree{})}, {2, split}});
+    return rc::gen::weightedOneOf<SplitTree>({{1, rc::gen::just(SplitTree{})}, {1, split}});
 }
 
 inline void collect_leaves(const SplitTree& t, const Leaf& cell, std::vector<Leaf>& out) {
@@ -49,12 +49,14 @@ inline LeafGrid to_grid(const SplitTree& t) {
     return LeafGrid(std::move(leaves));
 }
 
-/// Random octrees of depth 1..max_depth (the root is always split once).
+/// Random octrees of depth 2..max_depth (the root is always split once).
+/// Fixed at the nominal size: RapidCheck scales inRange (hence weightedOneOf) by size, which
+/// would make every tree a single split for most of the run.
 inline rc::Gen<LeafGrid> gen_octree(int max_depth = 5) {
-    return rc::gen::mapcat(rc::gen::inRange(1, max_depth + 1), [](int depth) {
+    return rc::gen::resize(rc::kNominalSize, rc::gen::mapcat(rc::gen::inRange(2, max_depth + 1), [](int depth) {
         return rc::gen::map(rc::gen::container<std::vector<SplitTree>>(8, gen_split_tree(depth - 1)),
                             [](std::vector<SplitTree> kids) { return to_grid(SplitTree{std::move(kids)}); });
-    });
+    }));
 }
 
 /// Fails the property with the check's message and the grid as a leaf file.

@@ -103,6 +103,15 @@ std::optional<std::size_t> LeafGrid::leaf_within(const Leaf& cell) const {
     return locate(cell);
 }
 
+std::vector<Leaf> LeafGrid::interior_nodes() const {
+    std::vector<Leaf> out;
+    out.reserve(leaves_.size() / 7 + 1);
+    nodes_.for_each([&](const Leaf& cell, std::int32_t v) {
+        if (v < 0) out.push_back(cell);
+    });
+    return out;
+}
+
 std::vector<std::size_t> LeafGrid::counts_per_level() const {
     std::vector<std::size_t> counts(static_cast<std::size_t>(max_level()) + 1, 0);
     for (const Leaf& l : leaves_) ++counts[static_cast<std::size_t>(l.level)];

@@ -26,21 +26,37 @@ GridCheck is_paired(const LeafGrid& grid) {
     return {};
 }
 
-// A leaf A (level L) and a leaf B in contact with level(B) <= L-2 always show up as: the
-// same-level neighbour cell N of A is neither a leaf, subdivided, nor inside a leaf of
-// level L-1. Checking that from the finer side finds every violation.
+namespace {
+
+// The leaf inside interior node `node` that is nearest its side `d`: it touches the
+// neighbour of `node` in direction `d` through the same kind of contact.
+std::size_t leaf_towards(const LeafGrid& grid, Leaf cell, const Offset& d) {
+    const int c = (d.dx > 0 ? 1 : 0) | (d.dy > 0 ? 2 : 0) | (d.dz > 0 ? 4 : 0);
+    for (;;) {
+        if (const auto n = grid.find(cell)) return *n;
+        cell = children(cell)[static_cast<std::size_t>(c)];
+    }
+}
+
+}  // namespace
+
+// Balanced iff every interior node's same-level neighbours (through the contacts `mode`
+// constrains) are nodes too, not strictly inside a coarser leaf (see refinement.cpp).
+// One pass over interior nodes; a violation yields the pair (a leaf of the node nearest
+// the neighbour, the coarse leaf covering the neighbour), >= 2 levels apart.
 GridCheck is_balanced(const LeafGrid& grid, Balance mode) {
-    for (std::size_t n = 0; n < grid.size(); ++n) {
-        const Leaf& leaf = grid.leaf(n);
-        if (leaf.level < 2) continue;
+    for (const Leaf& node : grid.interior_nodes()) {
         for (const Offset& d : neighbour_offsets(mode)) {
-            const Leaf cell = neighbour(leaf, d);
-            if (!cell.valid() || grid.find(cell) || grid.is_subdivided(cell) || grid.find(parent(cell))) continue;
+            const Leaf cell = neighbour(node, d);
+            if (!cell.valid() || grid.find(cell) || grid.is_subdivided(cell)) continue;
             const std::size_t coarse = *grid.locate(cell);
-            return failure(grid, n, coarse, std::string(mode == Balance::Strong ? "not strongly" : "not weakly") +
-                                          " balanced: leaves " + grid.describe(n) + " and " + grid.describe(coarse) +
-                                          " share a " + contact_name(d) + " but differ by " +
-                                          std::to_string(leaf.level - grid.leaf(coarse).level) + " levels");
+            const std::size_t fine = leaf_towards(grid, node, d);
+            return failure(grid, fine, coarse, std::string(mode == Balance::Strong ? "not strongly" : "not weakly") +
+                                                   " balanced: leaves " + grid.describe(fine) + " and " +
+                                                   grid.describe(coarse) + " share a " + contact_name(d) +
+                                                   " but differ by " +
+                                                   std::to_string(grid.leaf(fine).level - grid.leaf(coarse).level) +
+                                                   " levels");
         }
     }
     return {};

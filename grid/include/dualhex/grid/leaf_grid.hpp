@@ -42,6 +42,9 @@ public:
     /// Some leaf inside or equal to `cell` (used to name a witness), empty if outside.
     [[nodiscard]] std::optional<std::size_t> leaf_within(const Leaf& cell) const;
 
+    /// The interior nodes of the octree (proper ancestors of leaves), unspecified order.
+    [[nodiscard]] std::vector<Leaf> interior_nodes() const;
+
     /// counts[L] = number of leaves at level L, for L = 0..max_level().
     [[nodiscard]] std::vector<std::size_t> counts_per_level() const;
     [[nodiscard]] int min_level() const;
