@@ -31,6 +31,7 @@ void Octree::split(const Leaf& leaf) {
     *nodes_.find(leaf) = kInterior;
     for (const Leaf& child : children(leaf)) nodes_.insert(child, kLeaf);
     leaf_count_ += 7;
+    splits_.push_back(leaf);
 }
 
 std::vector<Leaf> Octree::leaves() const {
