@@ -1,0 +1,1 @@
+namespace dualhex { int schemes_placeholder() { return 0; } }
