@@ -1,0 +1,136 @@
+#include "dualhex/schemes/element_library.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+#include "dualhex/topology/transform.hpp"
+
+#ifndef DUALHEX_ELEMENTS_SOURCE_DIR
+#define DUALHEX_ELEMENTS_SOURCE_DIR ""
+#endif
+#ifndef DUALHEX_INSTALL_DATADIR
+#define DUALHEX_INSTALL_DATADIR "share"
+#endif
+
+namespace dualhex {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> Element::cell_labels() const {
+    std::vector<std::string> labels;
+    for (const auto& c : data.cells) labels.push_back(c.label);
+    return labels;
+}
+
+Element load_element(const fs::path& file) {
+    Element e;
+    e.file = file;
+    e.data = read_element_file(file);
+    e.name = e.data.name;
+    e.complex = to_complex(e.data);
+    e.check = check_element(e.complex, LeafBox{{}, e.data.leaf}, e.cell_labels());
+    return e;
+}
+
+fs::path source_elements_directory() { return fs::path(DUALHEX_ELEMENTS_SOURCE_DIR); }
+
+fs::path default_elements_directory() {
+    std::error_code ec;
+    if (const char* env = std::getenv("DUALHEX_ELEMENTS"); env && *env) {
+        fs::path p(env);
+        if (!fs::is_directory(p, ec))
+            throw SchemeFormatError(p.string(), 0, "DUALHEX_ELEMENTS is not a directory");
+        return p;
+    }
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const fs::path installed = exe.parent_path() / ".." / DUALHEX_INSTALL_DATADIR / "dualhex" / "elements";
+        if (fs::is_directory(installed, ec)) return installed.lexically_normal();
+    }
+    const fs::path src = source_elements_directory();
+    if (!src.empty() && fs::is_directory(src, ec)) return src;
+    throw SchemeFormatError("", 0,
+                            "no element directory found (set DUALHEX_ELEMENTS, or install share/dualhex/elements)");
+}
+
+std::vector<ElementScanEntry> scan_elements(const fs::path& directory) {
+    std::error_code ec;
+    if (!fs::is_directory(directory, ec)) throw SchemeFormatError(directory.string(), 0, "not a directory");
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(directory))
+        if (entry.is_regular_file() && entry.path().extension() == ".element") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::vector<ElementScanEntry> out;
+    for (const auto& f : files) {
+        ElementScanEntry s;
+        s.file = f;
+        try {
+            s.element = load_element(f);
+        } catch (const SchemeFormatError& e) {
+            s.error = e.what();
+        }
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+LeafBox placed_leaf_box(std::int64_t leaf, const CubeSymmetry& symmetry, const LatticePoint& translation) {
+    const LatticePoint far = symmetry.apply({leaf, leaf, leaf});
+    LatticePoint lo = translation;
+    for (int a = 0; a < 3; ++a) lo[a] += std::min<std::int64_t>(0, far[a]);
+    return {lo, leaf};
+}
+
+ElementLibrary ElementLibrary::load(const fs::path& directory) {
+    ElementLibrary lib;
+    lib.directory_ = directory;
+    for (auto& s : scan_elements(directory)) {
+        if (!s.element) throw SchemeFormatError(s.file.string(), 0, "cannot load element: " + s.error);
+        Element& e = *s.element;
+        if (!e.valid()) {
+            std::ostringstream os;
+            os << "element '" << e.name << "' is invalid: ";
+            e.check.print(os, 10);
+            throw SchemeFormatError(s.file.string(), 0, os.str());
+        }
+        if (e.name != s.file.stem().string())
+            throw SchemeFormatError(s.file.string(), 0,
+                                    "element name '" + e.name + "' differs from the file name '" + s.file.stem().string() + "'");
+        if (lib.find(e.name))
+            throw SchemeFormatError(s.file.string(), 0, "duplicate element name '" + e.name + "'");
+        lib.elements_.push_back(std::move(e));
+    }
+    std::sort(lib.elements_.begin(), lib.elements_.end(),
+              [](const Element& a, const Element& b) { return a.name < b.name; });
+    return lib;
+}
+
+ElementLibrary ElementLibrary::load_default() { return load(default_elements_directory()); }
+
+std::vector<std::string> ElementLibrary::names() const {
+    std::vector<std::string> n;
+    for (const auto& e : elements_) n.push_back(e.name);
+    return n;
+}
+
+const Element* ElementLibrary::find(const std::string& name) const {
+    for (const auto& e : elements_)
+        if (e.name == name) return &e;
+    return nullptr;
+}
+
+const Element& ElementLibrary::at(const std::string& name) const {
+    if (const auto* e = find(name)) return *e;
+    std::string known;
+    for (const auto& n : names()) known += (known.empty() ? "" : ", ") + n;
+    throw std::out_of_range("unknown element '" + name + "' (known: " + known + ")");
+}
+
+CellComplex ElementLibrary::instance(const std::string& name, const CubeSymmetry& symmetry,
+                                     const LatticePoint& translation) const {
+    return transform(at(name).complex, symmetry, translation);
+}
+
+}  // namespace dualhex

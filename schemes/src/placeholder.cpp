@@ -1,1 +1,0 @@
-namespace dualhex { int schemes_placeholder() { return 0; } }
