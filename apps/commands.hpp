@@ -39,6 +39,7 @@ struct NotYetAvailable : std::runtime_error {
 void register_classify(CLI::App& app);
 void register_grid(CLI::App& app);
 void register_verify(CLI::App& app);
+void register_element(CLI::App& app);
 
 // --- shared helpers (commands.cpp) ---
 

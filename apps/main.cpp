@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     register_classify(app);
     register_grid(app);
     register_verify(app);
+    register_element(app);
 
     try {
         app.parse(argc, argv);  // subcommand callbacks run in here
