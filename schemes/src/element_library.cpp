@@ -55,15 +55,21 @@ fs::path default_elements_directory() {
                             "no element directory found (set DUALHEX_ELEMENTS, or install share/dualhex/elements)");
 }
 
-std::vector<ElementScanEntry> scan_elements(const fs::path& directory) {
+namespace {
+std::vector<fs::path> element_files(const fs::path& directory) {
     std::error_code ec;
     if (!fs::is_directory(directory, ec)) throw SchemeFormatError(directory.string(), 0, "not a directory");
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(directory))
         if (entry.is_regular_file() && entry.path().extension() == ".element") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
+    return files;
+}
+}  // namespace
+
+std::vector<ElementScanEntry> scan_elements(const fs::path& directory) {
     std::vector<ElementScanEntry> out;
-    for (const auto& f : files) {
+    for (const auto& f : element_files(directory)) {
         ElementScanEntry s;
         s.file = f;
         try {
@@ -86,20 +92,18 @@ LeafBox placed_leaf_box(std::int64_t leaf, const CubeSymmetry& symmetry, const L
 ElementLibrary ElementLibrary::load(const fs::path& directory) {
     ElementLibrary lib;
     lib.directory_ = directory;
-    for (auto& s : scan_elements(directory)) {
-        if (!s.element) throw SchemeFormatError(s.file.string(), 0, "cannot load element: " + s.error);
-        Element& e = *s.element;
+    for (const auto& file : element_files(directory)) {
+        Element e = load_element(file);  // a malformed file throws its own file:line error
         if (!e.valid()) {
             std::ostringstream os;
             os << "element '" << e.name << "' is invalid: ";
             e.check.print(os, 10);
-            throw SchemeFormatError(s.file.string(), 0, os.str());
+            throw SchemeFormatError(file.string(), 0, os.str());
         }
-        if (e.name != s.file.stem().string())
-            throw SchemeFormatError(s.file.string(), 0,
-                                    "element name '" + e.name + "' differs from the file name '" + s.file.stem().string() + "'");
-        if (lib.find(e.name))
-            throw SchemeFormatError(s.file.string(), 0, "duplicate element name '" + e.name + "'");
+        if (e.name != file.stem().string())
+            throw SchemeFormatError(file.string(), 0,
+                                    "element name '" + e.name + "' differs from the file name '" + file.stem().string() + "'");
+        if (lib.find(e.name)) throw SchemeFormatError(file.string(), 0, "duplicate element name '" + e.name + "'");
         lib.elements_.push_back(std::move(e));
     }
     std::sort(lib.elements_.begin(), lib.elements_.end(),
