@@ -77,7 +77,7 @@ protected:
 
 TEST_F(Cli, HelpOfEverySubcommand) {
     const std::vector<std::vector<std::string>> cmds = {
-        {}, {"classify"}, {"grid"}, {"grid", "check"}, {"grid", "balance"}, {"grid", "pair"}, {"verify"}};
+        {}, {"classify"}, {"element"}, {"grid"}, {"grid", "check"}, {"grid", "balance"}, {"grid", "pair"}, {"verify"}};
     for (auto args : cmds) {
         args.push_back("--help");
         const Result r = run(args);
