@@ -1,3 +1,4 @@
+from autolid import with_lid
 from cx import *
 H=U//2   # 1/2
 L=U//4   # low apex height 1/4
@@ -26,3 +27,79 @@ def C1():
     rest=[[a,b,c],[a,X1,XY,Y1,b],[a,X1,XZ,Z1,c],[b,Y1,YZ,Z1,c],
           [X1,XY,XYZ,XZ],[Y1,XY,XYZ,YZ],[Z1,XZ,XYZ,YZ]]
     return [('C1.tet',tet),('C1.rest',rest)]
+
+def swapxz(cells):
+    return [(n,[[(p[2],p[1],p[0]) for p in f] for f in fl]) for n,fl in cells]
+
+def Fp():
+    """F with the chain along z (C_z) lower and C_x on top."""
+    return [(n.replace('F.','Fp.'),fl) for n,fl in swapxz(F())]
+
+def D_A():
+    """Leaf diagonal to a convex x-edge (fine block y<0,z<0): the perpendicular chain T
+    bends with a tetrahedron under the parallel chain W (option A)."""
+    P=(0,0,0); hx=(H,0,0); X1=(U,0,0)
+    aY=(0,L,0); aZ=(0,0,L); bY=(0,H,0); bZ=(0,0,H); wY=(U,H,0); wZ=(U,0,H)
+    Y1=(0,U,0); Z1=(0,0,U); XY=(U,U,0); XZ=(U,0,U); YZ=(0,U,U); XYZ=(U,U,U)
+    tet=[[P,hx,aY],[P,hx,aZ],[P,aY,aZ],[hx,aY,aZ]]
+    W=[[aY,bY,wY,X1,hx],[aZ,bZ,wZ,X1,hx],[hx,aY,aZ],[aY,bY,bZ,aZ],[X1,wY,wZ],[bY,wY,wZ,bZ]]
+    lid=[[bY,Y1,XY,wY],[bZ,Z1,XZ,wZ],[bY,Y1,YZ,Z1,bZ],[wY,XY,XYZ,XZ,wZ],[Y1,XY,XYZ,YZ],[Z1,XZ,XYZ,YZ],[bY,wY,wZ,bZ]]
+    return [('DA.tet',tet),('DA.W',W),('DA.lid',lid)]
+
+def D_B():
+    """Leaf diagonal to a convex x-edge: W (parallel chain) lower in the face-adjacent
+    leaves, so T bends over W's first prism as a prism (option B)."""
+    P=(0,0,0); hx=(H,0,0); X1=(U,0,0)
+    aY0=(0,L,0); aY1=(H,L,0); aY2=(U,H,0); aZ0=(0,0,L); aZ1=(H,0,L); aZ2=(U,0,H)
+    bY=(0,H,0); bZ=(0,0,H)
+    Y1=(0,U,0); Z1=(0,0,U); XY=(U,U,0); XZ=(U,0,U); YZ=(0,U,U); XYZ=(U,U,U)
+    p1=[[P,aY0,aZ0],[hx,aY1,aZ1],[P,hx,aY1,aY0],[P,hx,aZ1,aZ0],[aY0,aY1,aZ1,aZ0]]
+    p2=[[hx,aY1,aZ1],[X1,aY2,aZ2],[hx,X1,aY2,aY1],[hx,X1,aZ2,aZ1],[aY1,aY2,aZ2,aZ1]]
+    T=[[aY0,aY1,bY],[aZ0,aZ1,bZ],[aY0,aY1,aZ1,aZ0],[aY0,bY,bZ,aZ0],[bY,aY1,aZ1,bZ]]
+    lid=[[bY,aY1,aY2,XY,Y1],[bZ,aZ1,aZ2,XZ,Z1],[bY,Y1,YZ,Z1,bZ],[aY2,XY,XYZ,XZ,aZ2],
+         [Y1,XY,XYZ,YZ],[Z1,XZ,XYZ,YZ],[aY1,aY2,aZ2,aZ1],[bY,aY1,aZ1,bZ]]
+    return [('DB.p1',p1),('DB.p2',p2),('DB.T',T),('DB.lid',lid)]
+
+def E1():
+    """Concave edge along z (fine: x<0 or y<0), interfaces x=0 and y=0. The turning chain T
+    (over z=0) hugs the interface; the corner cut C_z passes over it. Single arrangement of
+    Sigma_T (z=1/2 arch) and Sigma_C (x=1/2 ~ y=1/2 arch around the concave edge)."""
+    T=U; h=H
+    P=(0,0,0)
+    g=lambda x,y,z:(x,y,z)
+    Tc=[[P,(h,0,0),(h,0,h),(0,0,h)],[P,(0,h,0),(0,h,h),(0,0,h)],[P,(h,0,0),(0,h,0)],
+        [(h,0,0),(h,0,h),(0,h,h),(0,h,0)],[(0,0,h),(h,0,h),(0,h,h)]]
+    To=[[(h,0,0),(T,0,0),(T,0,h),(h,0,h)],[(0,h,0),(0,T,0),(0,T,h),(0,h,h)],
+        [(h,0,0),(T,0,0),(T,h,0),(h,T,0),(0,T,0),(0,h,0)],[(T,0,0),(T,h,0),(T,0,h)],[(0,T,0),(h,T,0),(0,T,h)],
+        [(h,0,0),(h,0,h),(0,h,h),(0,h,0)],[(h,0,h),(T,0,h),(T,h,0),(h,T,0),(0,T,h),(0,h,h)]]
+    Cz=[[(0,0,h),(h,0,h),(h,0,T),(0,0,T)],[(0,0,h),(0,h,h),(0,h,T),(0,0,T)],[(0,0,h),(h,0,h),(0,h,h)],
+        [(0,0,T),(h,0,T),(0,h,T)],[(h,0,h),(h,0,T),(0,h,T),(0,h,h)]]
+    return with_lid([('E1.Tc',Tc),('E1.To',To),('E1.Cz',Cz)],'E1.lid')
+
+# ---------------- odd-chain model: chains hug the far faces (octant mid-planes) -------------
+def reflect(cells, axes):
+    def m(p): return tuple(U-p[i] if i in axes else p[i] for i in range(3))
+    return [(n,[[m(p) for p in f] for f in fl]) for n,fl in cells]
+
+def Fo():
+    """Flat: fine below (y<0). Chains over the mid-planes x=1 and z=1 cross at the far
+    corner (1,0,1); the chain along x (hugging z=1) is the lower one."""
+    return [(n.replace('F.','Fo.'),fl) for n,fl in reflect(F(),(0,2))]
+
+def tet_at(c):
+    """Bend tetrahedron at leaf corner c (a far end of an inner edge): c and the three
+    half-edge points next to it."""
+    pts=[]
+    for i in range(3):
+        q=list(c); q[i]=H; pts.append(tuple(q))
+    a,b,d=pts
+    return [[c,a,b],[c,a,d],[c,b,d],[a,b,d]]
+
+def Cn(corners):
+    return with_lid([('C.tet%d'%k, tet_at(c)) for k,c in enumerate(corners)], 'C.rest')
+def C1o(): return Cn([(U,0,0)])
+def C2o(): return Cn([(U,0,0),(0,U,0)])
+def C3o(): return Cn([(U,0,0),(0,U,0),(0,0,U)])
+def FCo():
+    """F plus the bend tetrahedron at the top of the inner edge perpendicular to the interface."""
+    return with_lid([c for c in Fo() if 'lid' not in c[0]] + [('FC.tet', tet_at((0,U,0)))], 'FC.lid')
