@@ -1,0 +1,85 @@
+#pragma once
+// Internal: placed-element templates and their emission into a ComplexBuilder.
+//
+// A template is one element moved by one world symmetry about the origin (library
+// `instance`, so reflections keep cells outward-oriented), its coordinates rescaled to the
+// common lattice unit U (the lcm of the library's `leaf` resolutions, made even so fine
+// leaves of U/2 stay integral). Emission adds the template's points once (translated,
+// scaled, optionally wrapped) and its cells as loops of those vertices: the builder welds
+// by exact keys and deduplicates shared faces.
+//
+// No schemes/element_library.hpp here: its LeafBox collides with grid/leaf.hpp's, so a
+// translation unit can include one or the other (install.cpp includes the grid).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <deque>
+#include <vector>
+
+#include "dualhex/schemes/placement.hpp"
+#include "dualhex/topology/complex_builder.hpp"
+
+namespace dualhex {
+class ElementLibrary;
+}
+
+namespace dualhex::detail {
+
+struct ElementTemplate {
+    std::string element;  // "" for the plain hexahedron
+    std::vector<LatticePoint> points;
+    std::vector<std::uint32_t> face_offsets{0};  // loops of all cells' outward half-faces
+    std::vector<std::uint32_t> face_points;
+    std::vector<std::uint32_t> cell_offsets{0};  // into faces
+    [[nodiscard]] std::size_t n_cells() const { return cell_offsets.size() - 1; }
+};
+
+/// The common lattice unit of a library (see above); 2 for an empty library.
+[[nodiscard]] std::int64_t common_unit(const ElementLibrary& library);
+
+class TemplateCache {
+public:
+    explicit TemplateCache(const ElementLibrary& library);
+    [[nodiscard]] std::int64_t unit() const { return unit_; }
+    /// The hex [0, size]^3 (size in lattice units).
+    [[nodiscard]] const ElementTemplate& hex(std::int64_t size);
+    /// Element index (for per-leaf records), throws std::out_of_range naming known elements.
+    [[nodiscard]] int element_index(const std::string& name);
+    [[nodiscard]] const std::string& element_name(int index) const { return names_[static_cast<std::size_t>(index)]; }
+    [[nodiscard]] const std::vector<std::string>& element_names() const { return names_; }
+    [[nodiscard]] const ElementTemplate& placed(int element, const CubeSymmetry& world);
+
+private:
+    const ElementLibrary* library_;
+    std::int64_t unit_;
+    std::unordered_map<std::int64_t, ElementTemplate> hexes_;
+    std::unordered_map<std::string, int> index_;
+    std::vector<std::string> names_;
+    std::vector<std::array<int, 48>> slot_;  // per element, per symmetry: index into templates_ or -1
+    std::deque<ElementTemplate> templates_;  // stable references
+};
+
+/// Throws UnknownPatternError-free std::invalid_argument if the placement's symmetry moves
+/// the leaf out of its local box [0,1]^3 (only the 6 axis permutations keep it).
+void check_placement_symmetry(const Placement& placement);
+
+/// Adds the template at `translation + scale * p` (each point then passed through `wrap`).
+template <class Wrap>
+void emit(ComplexBuilder& builder, const ElementTemplate& t, const LatticePoint& translation, std::int64_t scale,
+          Wrap&& wrap, std::vector<VertexHandle>& vertices, std::vector<VertexHandle>& loop,
+          std::vector<HalfFaceHandle>& halffaces) {
+    vertices.resize(t.points.size());
+    for (std::size_t n = 0; n < t.points.size(); ++n) vertices[n] = builder.add_vertex(wrap(translation + t.points[n] * scale));
+    for (std::size_t c = 0; c + 1 < t.cell_offsets.size(); ++c) {
+        halffaces.clear();
+        for (std::uint32_t f = t.cell_offsets[c]; f < t.cell_offsets[c + 1]; ++f) {
+            loop.clear();
+            for (std::uint32_t q = t.face_offsets[f]; q < t.face_offsets[f + 1]; ++q) loop.push_back(vertices[t.face_points[q]]);
+            halffaces.push_back(builder.add_face(loop));
+        }
+        builder.add_cell(halffaces);
+    }
+}
+
+}  // namespace dualhex::detail

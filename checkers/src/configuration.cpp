@@ -1,0 +1,197 @@
+#include <array>
+#include <sstream>
+#include <stdexcept>
+
+#include "assembly.hpp"
+#include "dualhex/checkers/cube_window.hpp"
+#include "dualhex/checkers/periodic_configuration.hpp"
+#include "dualhex/topology/dual.hpp"
+#include "dualhex/topology/histograms.hpp"
+#include "dualhex/topology/incidence.hpp"
+
+namespace dualhex {
+
+std::string format_histogram(const std::map<int, std::size_t>& histogram) {
+    std::string out = "{";
+    for (const auto& [k, n] : histogram) {
+        if (out.size() > 1) out += ", ";
+        out += std::to_string(k) + ":" + std::to_string(n);
+    }
+    return out + "}";
+}
+
+std::string format_mask(std::uint8_t mask) {
+    std::string out = "0b";
+    for (int b = 7; b >= 0; --b) out += ((mask >> b) & 1) ? '1' : '0';
+    return out;
+}
+
+std::string ConfigurationReport::summary() const {
+    std::ostringstream os;
+    os << format_mask(mask) << ' ';
+    if (!built) {
+        os << "ERROR " << error;
+        return os.str();
+    }
+    os << (ok() ? "ok" : "FAIL") << " cells " << cells << " faces " << faces << " checked vertices " << checked_vertices
+       << " hexes " << hexes << " violations " << validation.violations.size() << " F " << format_histogram(face_sizes)
+       << " dual " << format_histogram(dual_edge_valences) << " elements {";
+    bool first = true;
+    for (const auto& [name, n] : elements) {
+        os << (first ? "" : ", ") << name << ':' << n;
+        first = false;
+    }
+    os << '}';
+    return os.str();
+}
+
+namespace {
+
+using Index3 = std::array<std::int64_t, 3>;
+
+std::int64_t floor_mod(std::int64_t a, std::int64_t m) { return ((a % m) + m) % m; }
+
+// Builds the complex of a configuration: `octants` are the octant cubes (min corner 2*o)
+// that are built; `fine(o)` the status of any octant cube (for contexts); `wrap` maps
+// lattice points to keys.
+template <class Fine, class Wrap>
+ConfigurationComplex assemble(std::uint8_t mask, const std::vector<Index3>& octants, Fine&& fine, Wrap&& wrap,
+                              const TransitionRule& rule, const ElementLibrary& library) {
+    detail::TemplateCache cache(library);
+    const std::int64_t U = cache.unit();
+    ConfigurationComplex out;
+    out.mask = mask;
+    out.unit = U;
+    ComplexBuilder builder;
+    std::vector<VertexHandle> vs, loop;
+    std::vector<HalfFaceHandle> hfs;
+    const detail::ElementTemplate& fine_hex = cache.hex(U / 2);
+    const detail::ElementTemplate& coarse_hex = cache.hex(U);
+    for (const Index3& o : octants) {
+        const LatticePoint lo{2 * o[0], 2 * o[1], 2 * o[2]};
+        if (fine(o)) {
+            for (int c = 0; c < 64; ++c) {
+                const LatticePoint at = lo * U + LatticePoint{c & 3, (c >> 2) & 3, (c >> 4) & 3} * (U / 2);
+                detail::emit(builder, fine_hex, at, 1, wrap, vs, loop, hfs);
+                ++out.fine_hexes;
+            }
+            continue;
+        }
+        for (int c = 0; c < 8; ++c) {
+            PlacedLeaf leaf;
+            leaf.leaf = lo + LatticePoint{c & 1, (c >> 1) & 1, (c >> 2) & 1};
+            LeafContext& ctx = leaf.context;
+            for (int a = 0; a < 3; ++a) {
+                const std::int64_t x = leaf.leaf[a];
+                const bool even = floor_mod(x, 2) == 0;
+                ctx.application_point[a] = even ? x : x + 1;
+                ctx.direction[static_cast<std::size_t>(a)] = even ? 1 : -1;
+            }
+            for (int i = -2; i <= 1; ++i)
+                for (int j = -2; j <= 1; ++j)
+                    for (int k = -2; k <= 1; ++k) {
+                        const int local[3] = {i, j, k};
+                        Index3 w{};
+                        for (int a = 0; a < 3; ++a) {
+                            const std::int64_t half = ctx.application_point[a] / 2;
+                            w[static_cast<std::size_t>(a)] =
+                                ctx.direction[static_cast<std::size_t>(a)] > 0 ? half + local[a] : half - local[a] - 1;
+                        }
+                        if (fine(w)) ctx.set_fine(i, j, k);
+                    }
+            leaf.placement = rule.place(ctx);
+            if (leaf.placement) {
+                detail::check_placement_symmetry(*leaf.placement);
+                const int e = cache.element_index(leaf.placement->element);
+                const detail::ElementTemplate& t = cache.placed(e, world_symmetry(ctx, *leaf.placement));
+                detail::emit(builder, t, ctx.application_point * U, 1, wrap, vs, loop, hfs);
+            } else {
+                detail::emit(builder, coarse_hex, leaf.leaf * U, 1, wrap, vs, loop, hfs);
+            }
+            out.coarse_leaves.push_back(std::move(leaf));
+        }
+    }
+    out.complex = std::move(builder).build();
+    return out;
+}
+
+template <class Filter>
+ConfigurationReport analyse(ConfigurationComplex built, Filter&& accept) {
+    ConfigurationReport r;
+    r.mask = built.mask;
+    r.built = true;
+    const CellComplex& cx = built.complex;
+    ValidationOptions options;
+    options.interior_filter = [&](VertexHandle v) { return accept(cx.position(v)); };
+    r.validation = validate(cx, options);
+    r.vertices = cx.n_vertices();
+    r.edges = cx.n_edges();
+    r.faces = cx.n_faces();
+    r.cells = cx.n_cells();
+    const Incidence inc(cx);
+    for (std::size_t v = 0; v < cx.n_vertices(); ++v)
+        if (!inc.is_boundary(VertexHandle(v)) && accept(cx.position(VertexHandle(v)))) ++r.checked_vertices;
+    const DualResult dual = interior_dual(cx, inc);
+    for (VertexHandle v : dual.mesh.primal_vertex)
+        if (accept(cx.position(v))) ++r.hexes;
+    r.face_sizes = face_size_histogram(cx);
+    r.dual_edge_valences = interior_dual_edge_valence_histogram(cx, inc);
+    for (const PlacedLeaf& leaf : built.coarse_leaves) ++r.elements[leaf.placement ? leaf.placement->element : "hex"];
+    if (built.fine_hexes) r.elements["fine"] = built.fine_hexes;
+    return r;
+}
+
+template <class Build, class Filter>
+ConfigurationReport check(std::uint8_t mask, Build&& build, Filter&& accept) {
+    try {
+        return analyse(build(), accept);
+    } catch (const std::exception& e) {
+        ConfigurationReport r;
+        r.mask = mask;
+        r.error = e.what();
+        return r;
+    }
+}
+
+}  // namespace
+
+ConfigurationComplex build_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
+                                                  const ElementLibrary& library) {
+    std::vector<Index3> octants;
+    for (int b = 0; b < 8; ++b) octants.push_back({b & 1, (b >> 1) & 1, (b >> 2) & 1});
+    const auto fine = [mask](const Index3& o) {
+        const int b = static_cast<int>(floor_mod(o[0], 2) | floor_mod(o[1], 2) << 1 | floor_mod(o[2], 2) << 2);
+        return ((mask >> b) & 1) != 0;
+    };
+    const std::int64_t period = 4 * detail::common_unit(library);
+    const auto wrap = [period](const LatticePoint& p) {
+        return LatticePoint{floor_mod(p.x, period), floor_mod(p.y, period), floor_mod(p.z, period)};
+    };
+    return assemble(mask, octants, fine, wrap, rule, library);
+}
+
+ConfigurationReport check_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
+                                                 const ElementLibrary& library) {
+    return check(mask, [&] { return build_periodic_configuration(mask, rule, library); },
+                 [](const LatticePoint&) { return true; });
+}
+
+ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {
+    std::vector<Index3> octants;
+    for (int b = 0; b < 8; ++b) octants.push_back({(b & 1) - 1, ((b >> 1) & 1) - 1, ((b >> 2) & 1) - 1});
+    // Octant index o (min corner 2o): -1 is the -side, 0 the +side; beyond, the nearest.
+    const auto fine = [mask](const Index3& o) {
+        const int b = (o[0] >= 0 ? 1 : 0) | (o[1] >= 0 ? 2 : 0) | (o[2] >= 0 ? 4 : 0);
+        return ((mask >> b) & 1) != 0;
+    };
+    return assemble(mask, octants, fine, [](const LatticePoint& p) { return p; }, rule, library);
+}
+
+ConfigurationReport check_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {
+    const std::int64_t half = 2 * detail::common_unit(library);
+    return check(mask, [&] { return build_cube_window(mask, rule, library); }, [half](const LatticePoint& p) {
+        return -half < p.x && p.x < half && -half < p.y && p.y < half && -half < p.z && p.z < half;
+    });
+}
+
+}  // namespace dualhex

@@ -1,0 +1,90 @@
+#include "dualhex/checkers/exhaustive.hpp"
+
+#include <chrono>
+#include <ostream>
+
+#include "dualhex/checkers/cube_window.hpp"
+#include "dualhex/checkers/periodic_configuration.hpp"
+#include "dualhex/grid/configurations.hpp"
+
+namespace dualhex {
+
+namespace {
+
+std::string failure_text(const ConfigurationReport& r, const char* where) {
+    std::string s = format_mask(r.mask) + " (" + where + "): ";
+    if (!r.built) return s + r.error;
+    s += std::to_string(r.validation.violations.size()) + " violations";
+    for (std::size_t k = 0; k < kViolationKinds; ++k)
+        if (r.validation.per_kind[k] > 0)
+            s += std::string(", ") + to_string(static_cast<ViolationKind>(k)) + " " + std::to_string(r.validation.per_kind[k]);
+    if (r.hexes != r.checked_vertices)
+        s += ", " + std::to_string(r.checked_vertices - r.hexes) + " non-cube dual cells";
+    return s;
+}
+
+}  // namespace
+
+ExhaustiveResult run_exhaustive(const TransitionRule& rule, const ElementLibrary& library) {
+    const auto start = std::chrono::steady_clock::now();
+    ExhaustiveResult res;
+    res.rule = rule.name();
+    const ConfigurationSpace space(SymmetryGroup::Full);
+    for (const ConfigurationClass& c : space.classes()) {
+        ClassSummary s;
+        s.representative = c.representative;
+        s.fine = c.fine;
+        res.classes.push_back(s);
+    }
+    for (int m = 0; m < kConfigurationCount; ++m) {
+        const auto mask = static_cast<std::uint8_t>(m);
+        res.periodic.push_back(check_periodic_configuration(mask, rule, library));
+        res.window.push_back(check_cube_window(mask, rule, library));
+        const ConfigurationReport& p = res.periodic.back();
+        const ConfigurationReport& w = res.window.back();
+        ClassSummary& s = res.classes[static_cast<std::size_t>(space.class_of(mask))];
+        ++s.configurations;
+        if (p.ok()) ++s.periodic_passed, ++res.periodic_passed;
+        if (w.ok()) ++s.window_passed, ++res.window_passed;
+        for (const auto* r : {&p, &w})
+            for (const auto& [name, n] : r->elements)
+                if (name != "fine") s.elements.insert(name);
+        if (s.first_error.empty() && !p.ok()) s.first_error = failure_text(p, "torus");
+        if (s.first_error.empty() && !w.ok()) s.first_error = failure_text(w, "window");
+        if (mask == s.representative && p.built) {
+            s.cells = p.cells;
+            s.hexes = p.hexes;
+            s.checked_vertices = p.checked_vertices;
+            s.face_sizes = p.face_sizes;
+            s.dual_edge_valences = p.dual_edge_valences;
+        }
+    }
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return res;
+}
+
+void print(std::ostream& os, const ExhaustiveResult& r) {
+    os << "rule " << r.rule << ": 256 configurations, " << r.classes.size() << " classes (48 symmetries)\n";
+    os << "class  repr        fine  members  torus  window  cells  hexes  F-sizes / dual valences  elements\n";
+    for (std::size_t n = 0; n < r.classes.size(); ++n) {
+        const ClassSummary& s = r.classes[n];
+        os << (n < 10 ? "  " : " ") << n << "   " << format_mask(s.representative) << "  " << s.fine << "     "
+           << s.configurations << (s.configurations < 10 ? "        " : "       ") << s.periodic_passed << "/"
+           << s.configurations << "  " << s.window_passed << "/" << s.configurations << "  ";
+        if (s.cells) {
+            os << s.cells << "  " << s.hexes << "  " << format_histogram(s.face_sizes) << " / "
+               << format_histogram(s.dual_edge_valences);
+        } else {
+            os << "-  -  -";
+        }
+        os << "  {";
+        bool first = true;
+        for (const auto& e : s.elements) os << (first ? "" : ",") << e, first = false;
+        os << "}" << (s.passed() ? "  PASS" : "  FAIL") << '\n';
+        if (!s.first_error.empty()) os << "        first problem: " << s.first_error << '\n';
+    }
+    os << "torus " << r.periodic_passed << "/256, window " << r.window_passed << "/256, "
+       << (r.all_passed() ? "all passed" : "NOT all passed") << " (" << r.seconds << " s)\n";
+}
+
+}  // namespace dualhex

@@ -1,0 +1,189 @@
+#include "dualhex/checkers/install.hpp"
+
+#include <array>
+
+#include "assembly.hpp"
+#include "dualhex/grid/cell_map.hpp"
+#include "dualhex/grid/predicates.hpp"
+#include "dualhex/topology/complex_builder.hpp"
+
+namespace dualhex {
+
+namespace {
+
+// Reflect a cell coordinate across the root faces until it lies in [0, n).
+std::int64_t mirror(std::int64_t c, std::int64_t n) {
+    while (c < 0 || c >= n) c = c < 0 ? -1 - c : 2 * n - 1 - c;
+    return c;
+}
+
+// The leaf's application point and direction (level-L units).
+void frame_of(const Leaf& leaf, LeafContext& ctx) {
+    for (int a = 0; a < 3; ++a) {
+        const std::int64_t x = leaf.coord(a);
+        const bool even = (x & 1) == 0;
+        ctx.application_point[a] = even ? x : x + 1;
+        ctx.direction[static_cast<std::size_t>(a)] = even ? 1 : -1;
+    }
+}
+
+// World neighbourhood masks per (level L, application point / 2), for every application
+// point some fine octant cube reaches (absent: all coarse).
+class ContextIndex {
+public:
+    ContextIndex(const LeafGrid& grid, OutsideRoot outside) : masks_(grid.size() / 4 + 16) {
+        for (const Leaf& node : grid.interior_nodes()) {
+            if (node.level == 0 || child_index(node) != 0) continue;
+            const int L = node.level;  // leaves of level L see parent(node) as a fine octant cube
+            const Leaf c = parent(node);
+            const std::int64_t n = std::int64_t{1} << (L - 1);
+            std::array<std::array<std::int64_t, 5>, 3> images{};
+            std::array<int, 3> count{};
+            for (int a = 0; a < 3; ++a) {
+                auto& img = images[static_cast<std::size_t>(a)];
+                int& k = count[static_cast<std::size_t>(a)];
+                img[static_cast<std::size_t>(k++)] = c.coord(a);
+                if (outside == OutsideRoot::Mirror)
+                    for (std::int64_t x : {std::int64_t{-2}, std::int64_t{-1}, n, n + 1})
+                        if (mirror(x, n) == c.coord(a) && x != c.coord(a)) img[static_cast<std::size_t>(k++)] = x;
+            }
+            for (int ix = 0; ix < count[0]; ++ix)
+                for (int iy = 0; iy < count[1]; ++iy)
+                    for (int iz = 0; iz < count[2]; ++iz) {
+                        const std::int64_t cx = images[0][static_cast<std::size_t>(ix)],
+                                           cy = images[1][static_cast<std::size_t>(iy)],
+                                           cz = images[2][static_cast<std::size_t>(iz)];
+                        for (int w = 0; w < 64; ++w) {
+                            const std::int64_t vx = cx - ((w & 3) - 2), vy = cy - (((w >> 2) & 3) - 2),
+                                               vz = cz - (((w >> 4) & 3) - 2);
+                            if (vx < 0 || vy < 0 || vz < 0 || vx > n || vy > n || vz > n) continue;
+                            *masks_.insert(Leaf{L, vx, vy, vz}, 0).first |= std::uint64_t{1} << w;
+                        }
+                    }
+        }
+    }
+
+    [[nodiscard]] LeafContext context(const Leaf& leaf) const {
+        LeafContext ctx;
+        if (leaf.level == 0) return ctx;
+        frame_of(leaf, ctx);
+        const LatticePoint& P = ctx.application_point;
+        if (const std::uint64_t* m = masks_.find(Leaf{leaf.level, P.x / 2, P.y / 2, P.z / 2}))
+            ctx.neighbourhood = to_local_neighbourhood(*m, ctx.direction);
+        return ctx;
+    }
+
+private:
+    CellMap<std::uint64_t> masks_;
+};
+
+}  // namespace
+
+std::map<std::string, std::size_t> InstallResult::elements_used() const {
+    std::map<std::string, std::size_t> out;
+    for (std::int16_t e : leaf_element) ++out[e < 0 ? std::string("hex") : element_names[static_cast<std::size_t>(e)]];
+    return out;
+}
+
+InstallCheck check_installable(const LeafGrid& grid, Balance balance) {
+    GridCheck c = is_paired(grid);
+    if (c.ok) c = is_balanced(grid, balance);
+    if (c.ok) return {};
+    return {false, "cannot install: " + c.message, c.first, c.second};
+}
+
+std::vector<LeafContext> leaf_contexts(const LeafGrid& grid, OutsideRoot outside) {
+    const ContextIndex index(grid, outside);
+    std::vector<LeafContext> out;
+    out.reserve(grid.size());
+    for (const Leaf& leaf : grid.leaves()) out.push_back(index.context(leaf));
+    return out;
+}
+
+LeafContext leaf_context(const LeafGrid& grid, std::size_t n, OutsideRoot outside) {
+    const Leaf& leaf = grid.leaf(n);
+    LeafContext ctx;
+    if (leaf.level == 0) return ctx;
+    frame_of(leaf, ctx);
+    const std::int64_t cells = std::int64_t{1} << (leaf.level - 1);
+    for (int i = -2; i <= 1; ++i)
+        for (int j = -2; j <= 1; ++j)
+            for (int k = -2; k <= 1; ++k) {
+                const int local[3] = {i, j, k};
+                Leaf cube{leaf.level - 1, 0, 0, 0};
+                bool inside = true;
+                for (int a = 0; a < 3; ++a) {
+                    const int w = ctx.direction[static_cast<std::size_t>(a)] > 0 ? local[a] : -1 - local[a];
+                    std::int64_t c = ctx.application_point[a] / 2 + w;
+                    if (c < 0 || c >= cells) {
+                        inside = false;
+                        c = mirror(c, cells);
+                    }
+                    (a == 0 ? cube.i : a == 1 ? cube.j : cube.k) = c;
+                }
+                if (!inside && outside == OutsideRoot::Coarse) continue;
+                bool fine = true;  // covered by leaves finer than the leaf: every child subdivided
+                for (const Leaf& child : children(cube)) fine = fine && grid.is_subdivided(child);
+                if (fine) ctx.set_fine(i, j, k);
+            }
+    return ctx;
+}
+
+InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const ElementLibrary& library,
+                      const InstallOptions& options) {
+    if (const InstallCheck c = check_installable(grid, options.balance); !c.ok)
+        throw InstallError(c.message, c.first, c.second);
+    const ContextIndex index(grid, options.outside_root);
+    detail::TemplateCache cache(library);
+    InstallResult out;
+    out.unit = cache.unit();
+    out.max_level = grid.max_level();
+    const std::int64_t U = out.unit;
+    const std::size_t n_leaves = grid.size();
+    out.leaf_cells.reserve(n_leaves + 1);
+    out.leaf_cells.push_back(0);
+    out.leaf_element.assign(n_leaves, -1);
+    out.leaf_symmetry.assign(n_leaves, 0);
+
+    ComplexBuilder builder;
+    builder.reserve(n_leaves + n_leaves / 2, 4 * n_leaves, n_leaves + n_leaves / 2);
+    std::vector<VertexHandle> vs, loop;
+    std::vector<HalfFaceHandle> hfs;
+    const detail::ElementTemplate& hex = cache.hex(U);
+    const auto identity = [](const LatticePoint& p) { return p; };
+    std::string last_name;
+    int last_index = -1;
+    for (std::size_t n = 0; n < n_leaves; ++n) {
+        const Leaf& leaf = grid.leaf(n);
+        const std::int64_t s = std::int64_t{1} << (out.max_level - leaf.level);
+        const LeafContext ctx = index.context(leaf);
+        std::optional<Placement> placement;
+        try {
+            placement = rule.place(ctx);
+            if (placement) {
+                detail::check_placement_symmetry(*placement);
+                if (last_index < 0 || placement->element != last_name) {
+                    last_index = cache.element_index(placement->element);
+                    last_name = placement->element;
+                }
+            }
+        } catch (const std::exception& e) {
+            throw InstallError("leaf " + grid.describe(n) + ": " + e.what(), n);
+        }
+        if (placement) {
+            const CubeSymmetry world = world_symmetry(ctx, *placement);
+            out.leaf_element[n] = static_cast<std::int16_t>(last_index);
+            out.leaf_symmetry[n] = static_cast<std::int8_t>(world.index());
+            detail::emit(builder, cache.placed(last_index, world), ctx.application_point * (U * s), s, identity, vs, loop,
+                         hfs);
+        } else {
+            detail::emit(builder, hex, LatticePoint{leaf.i, leaf.j, leaf.k} * (U * s), s, identity, vs, loop, hfs);
+        }
+        out.leaf_cells.push_back(static_cast<std::uint32_t>(builder.n_cells()));
+    }
+    out.element_names = cache.element_names();
+    out.complex = std::move(builder).build();
+    return out;
+}
+
+}  // namespace dualhex

@@ -1,1 +1,0 @@
-namespace dualhex { int checkers_placeholder() { return 0; } }
