@@ -172,10 +172,10 @@ TEST(SchemesCheck, InvertedCellHasNegativeVolume) {
     auto d = load("C1");
     // turn the tetrahedron inside out: every face reversed (closed and consistent, but
     // inward; its faces now meet 'rest' with equal orientation)
-    for (auto& f : d.cells[cell_index(d, "tet")].faces) std::reverse(f.begin(), f.end());
+    for (auto& f : d.cells[cell_index(d, "tet0")].faces) std::reverse(f.begin(), f.end());
     const auto r = check_element(d);
     EXPECT_TRUE(r.has(ElementIssueKind::CellNonPositiveVolume)) << text(r);
-    EXPECT_TRUE(message_mentions(r, ElementIssueKind::CellNonPositiveVolume, "'tet'")) << text(r);
+    EXPECT_TRUE(message_mentions(r, ElementIssueKind::CellNonPositiveVolume, "'tet0'")) << text(r);
 }
 
 TEST(SchemesCheck, InteriorFaceOnLeafFaceIsRejected) {
@@ -191,6 +191,6 @@ TEST(SchemesCheck, InteriorFaceOnLeafFaceIsRejected) {
     const auto d = parse_element_string(text_);
     ASSERT_TRUE(check_element(d).ok()) << text(check_element(d));
     // Check with a box whose +z face is the split plane: the shared face now lies on a leaf face.
-    const auto r = check_element(to_complex(d), LeafBox{{0, 0, -1}, 2});
+    const auto r = check_element(to_complex(d), ElementBox{{0, 0, -1}, 2});
     EXPECT_TRUE(r.has(ElementIssueKind::InteriorFaceOnLeafFace)) << text(r);
 }

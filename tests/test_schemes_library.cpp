@@ -73,10 +73,18 @@ TEST(SchemesPaperTable, ComparisonIsPerColumn) {
 
 TEST(SchemesLibrary, LoadsSeedElementsValidAndAsInThePaper) {
     const auto lib = ElementLibrary::load(elements_dir());
-    EXPECT_EQ(lib.names(), (std::vector<std::string>{"C1", "F"}));
+    EXPECT_EQ(lib.names(), (std::vector<std::string>{"C1", "C2", "C3", "E", "F", "F+C", "VC", "VS"}));
     const std::map<std::string, std::pair<std::size_t, std::map<int, std::size_t>>> expected = {
+        // cell counts and face-size histograms of the derived elements (the histograms are
+        // also the paper's Table "topology" rows, compared separately below)
         {"F", {4, {{3, 5}, {4, 10}, {5, 5}}}},
+        {"F+C", {5, {{3, 9}, {4, 9}, {5, 4}, {6, 2}}}},
         {"C1", {2, {{3, 4}, {4, 3}, {5, 3}}}},
+        {"C2", {3, {{3, 8}, {4, 1}, {5, 4}, {6, 1}}}},
+        {"C3", {4, {{3, 12}, {5, 3}, {6, 3}}}},
+        {"E", {6, {{3, 8}, {4, 14}, {5, 7}, {6, 1}}}},
+        {"VC", {7, {{3, 9}, {4, 21}, {6, 6}}}},
+        {"VS", {6, {{3, 8}, {4, 16}, {5, 3}, {6, 3}}}},
     };
     for (const auto& [name, exp] : expected) {
         const auto& e = lib.at(name);
@@ -88,13 +96,13 @@ TEST(SchemesLibrary, LoadsSeedElementsValidAndAsInThePaper) {
         EXPECT_TRUE(cmp.matches()) << name << ": " << cmp.summary();
         EXPECT_EQ(euler_characteristic(e.complex), 1) << name;
     }
-    EXPECT_EQ(lib.find("E"), nullptr);
-    EXPECT_THROW((void)lib.at("E"), std::out_of_range);
+    EXPECT_EQ(lib.find("no-such-element"), nullptr);
+    EXPECT_THROW((void)lib.at("no-such-element"), std::out_of_range);
 }
 
 TEST(SchemesLibrary, SymmetryPlacedInstancesStayValid) {
     const auto lib = ElementLibrary::load(elements_dir());
-    for (const char* name : {"F", "C1"}) {
+    for (const char* name : {"F", "F+C", "C1", "C2", "C3", "E", "VC", "VS"}) {
         const auto& e = lib.at(name);
         const auto hist = face_size_histogram(e.complex);
         for (int s = 0; s < CubeSymmetry::kOrder; ++s) {
@@ -108,7 +116,7 @@ TEST(SchemesLibrary, SymmetryPlacedInstancesStayValid) {
             const auto r = check_element(cx, box, e.cell_labels());
             EXPECT_TRUE(r.ok()) << name << " " << sym.to_string() << "\n" << report(r);
             // and the box is the image of the leaf: a wrong box must fail
-            const auto wrong = check_element(cx, LeafBox{t, e.leaf()}, e.cell_labels());
+            const auto wrong = check_element(cx, ElementBox{t, e.leaf()}, e.cell_labels());
             const bool box_is_t = box.min == t;
             EXPECT_EQ(wrong.ok(), box_is_t) << name << " " << sym.to_string();
         }

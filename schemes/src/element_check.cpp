@@ -77,7 +77,7 @@ void ElementCheckReport::print(std::ostream& os, std::size_t max_listed) const {
     if (issues.size() > max_listed) os << "  ... " << issues.size() - max_listed << " more\n";
 }
 
-ElementCheckReport check_element(const CellComplex& cx, const LeafBox& box, const std::vector<std::string>& labels) {
+ElementCheckReport check_element(const CellComplex& cx, const ElementBox& box, const std::vector<std::string>& labels) {
     ElementCheckReport r;
     auto cell_name = [&](std::size_t c) {
         std::string s = "cell " + std::to_string(c);
@@ -204,7 +204,7 @@ ElementCheckReport check_element(const CellComplex& cx, const LeafBox& box, cons
 ElementCheckReport check_element(const ElementData& element) {
     std::vector<std::string> labels;
     for (const auto& c : element.cells) labels.push_back(c.label);
-    return check_element(to_complex(element), LeafBox{{}, element.leaf}, labels);
+    return check_element(to_complex(element), ElementBox{{}, element.leaf}, labels);
 }
 
 }  // namespace dualhex

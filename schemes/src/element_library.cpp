@@ -30,7 +30,7 @@ Element load_element(const fs::path& file) {
     e.data = read_element_file(file);
     e.name = e.data.name;
     e.complex = to_complex(e.data);
-    e.check = check_element(e.complex, LeafBox{{}, e.data.leaf}, e.cell_labels());
+    e.check = check_element(e.complex, ElementBox{{}, e.data.leaf}, e.cell_labels());
     return e;
 }
 
@@ -82,7 +82,7 @@ std::vector<ElementScanEntry> scan_elements(const fs::path& directory) {
     return out;
 }
 
-LeafBox placed_leaf_box(std::int64_t leaf, const CubeSymmetry& symmetry, const LatticePoint& translation) {
+ElementBox placed_leaf_box(std::int64_t leaf, const CubeSymmetry& symmetry, const LatticePoint& translation) {
     const LatticePoint far = symmetry.apply({leaf, leaf, leaf});
     LatticePoint lo = translation;
     for (int a = 0; a < 3; ++a) lo[a] += std::min<std::int64_t>(0, far[a]);

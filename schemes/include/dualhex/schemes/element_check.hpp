@@ -24,7 +24,7 @@
 namespace dualhex {
 
 /// The leaf box [min, min + size]^3 (for an element file: min = origin, size = leaf).
-struct LeafBox {
+struct ElementBox {
     LatticePoint min;
     std::int64_t size = 0;
 };
@@ -74,7 +74,7 @@ struct ElementCheckReport {
 
 /// Checks `complex` as a subdivision of `box`; `cell_labels` (optional, by cell index)
 /// are used in messages.
-[[nodiscard]] ElementCheckReport check_element(const CellComplex& complex, const LeafBox& box,
+[[nodiscard]] ElementCheckReport check_element(const CellComplex& complex, const ElementBox& box,
                                                const std::vector<std::string>& cell_labels = {});
 
 struct ElementData;

@@ -52,7 +52,7 @@ struct ElementScanEntry {
 
 /// A point image of the leaf: the box that `instance(..., symmetry, translation)` fills,
 /// i.e. the image of [0, leaf]^3 under p -> symmetry.apply(p) + translation.
-[[nodiscard]] LeafBox placed_leaf_box(std::int64_t leaf, const CubeSymmetry& symmetry, const LatticePoint& translation);
+[[nodiscard]] ElementBox placed_leaf_box(std::int64_t leaf, const CubeSymmetry& symmetry, const LatticePoint& translation);
 
 class ElementLibrary {
 public:
