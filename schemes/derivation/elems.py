@@ -103,3 +103,54 @@ def C3o(): return Cn([(U,0,0),(0,U,0),(0,0,U)])
 def FCo():
     """F plus the bend tetrahedron at the top of the inner edge perpendicular to the interface."""
     return with_lid([c for c in Fo() if 'lid' not in c[0]] + [('FC.tet', tet_at((0,U,0)))], 'FC.lid')
+
+def Eo():
+    """Concave edge along x (interfaces y=0 and z=0; X coarse). The chain over the mid-plane
+    x=1 turns around the edge and passes BELOW the chains over z=1 (face y=0) and y=1
+    (face z=0) at the two crossings on the far corners (12,0,12) and (12,12,0)."""
+    g=lambda x,y,z:(x,y,z)
+    r1=(U,L,U); r2=(U,L,H); r3=(U,H,L); r4=(U,U,L)
+    P1=[[(H,0,H),(U,0,H),(U,0,U),(H,0,U)],[(U,0,H),(U,0,U),r1,r2],[(H,0,U),(U,0,U),r1],
+        [(H,0,H),(U,0,H),r2],[(H,0,H),(H,0,U),r1,r2]]
+    sw=lambda cells:[[(p[0],p[2],p[1]) for p in f] for f in cells]
+    P1b=sw(P1)
+    Ab=[[(H,0,0),(U,0,0),(U,0,H),(H,0,H)],[(H,0,0),(U,0,0),(U,H,0),(H,H,0)],
+        [(U,0,0),(U,0,H),r2,r3,(U,H,0)],[(H,0,H),(U,0,H),r2],[(H,H,0),(U,H,0),r3],
+        [(H,0,H),(H,0,0),(H,H,0),r3,r2]]
+    Bq=[[(0,0,H),(H,0,H),(H,0,U),(0,0,U)],[(0,0,H),(0,0,U),(0,H,U)],
+        [(0,0,U),(H,0,U),r1,(U,H,U),(0,H,U)],[r1,r2,(U,H,U)],[(H,0,H),(H,0,U),r1,r2],
+        [(0,0,H),(H,0,H),r2,(U,H,U),(0,H,U)]]
+    Cq=sw(Bq)
+    return with_lid([('E.P1',P1),('E.P1b',P1b),('E.bend',Ab),('E.B',Bq),('E.C',Cq)],'E.lid')
+
+def _VS_parts():
+    c1=(U,U,L); c2=(H,U,L); r2=(U,L,H)
+    E=dict(Eo())
+    P1=E['E.P1']; Bq=E['E.B']
+    p1c=[[(U,U,0),(U,H,0),c1],[(H,U,0),(H,H,0),c2],[(U,U,0),(H,U,0),(H,H,0),(U,H,0)],
+         [(U,U,0),(H,U,0),c2,c1],[(U,H,0),(H,H,0),c2,c1]]
+    p2c=[[(H,U,0),(H,H,0),c2],[(0,U,0),(0,H,0),(0,U,H)],[(H,U,0),(0,U,0),(0,H,0),(H,H,0)],
+         [(H,U,0),(0,U,0),(0,U,H),c2],[(H,H,0),(0,H,0),(0,U,H),c2]]
+    bend=[[(H,0,0),(U,0,0),(U,0,H),(H,0,H)],[(H,0,0),(U,0,0),(U,H,0),(H,H,0)],
+          [(U,0,0),(U,0,H),r2,(U,U,H),c1,(U,H,0)],[(H,0,H),(U,0,H),r2],
+          [(U,H,0),(H,H,0),c2,c1],[c1,c2,(U,U,H)],[(H,0,H),(H,0,0),(H,H,0),c2,(U,U,H),r2]]
+    return P1,Bq,p1c,p2c,bend
+
+def VSo():
+    """Concave edge along x next to a concave corner: the turning chain over x=1 passes
+    below the chain over z=1 (face y=0) but above the chain over y=1 (face z=0)."""
+    P1,Bq,p1c,p2c,bend=_VS_parts()
+    return with_lid([('VS.P1',P1),('VS.B',Bq),('VS.p1c',p1c),('VS.p2c',p2c),('VS.bend',bend)],'VS.lid')
+
+def rot(cells):
+    R=lambda p:(p[2],p[0],p[1])
+    return [[R(p) for p in f] for f in cells]
+
+def VCo():
+    """Concave corner: three turning chains, each below at one crossing and above at the
+    next (cyclic x -> y -> z)."""
+    P1,Bq,p1c,p2c,bend=_VS_parts()
+    out=[]
+    for k,(a,b) in enumerate([(P1,bend),(rot(P1),rot(bend)),(rot(rot(P1)),rot(rot(bend)))]):
+        out+= [('VC.P1_%d'%k,a),('VC.bend_%d'%k,b)]
+    return with_lid(out,'VC.lid')
