@@ -1,1 +1,2 @@
 # tests for the checkers layer
+dualhex_add_test(test_checkers_configurations SOURCES test_checkers_configurations.cpp DEPS dualhex::checkers)

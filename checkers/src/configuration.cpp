@@ -1,4 +1,5 @@
 #include <array>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
@@ -34,7 +35,8 @@ std::string ConfigurationReport::summary() const {
         return os.str();
     }
     os << (ok() ? "ok" : "FAIL") << " cells " << cells << " faces " << faces << " checked vertices " << checked_vertices
-       << " hexes " << hexes << " violations " << validation.violations.size() << " F " << format_histogram(face_sizes)
+       << " hexes " << hexes << " violations " << validation.violations.size()
+       << " open faces " << open_faces << " F " << format_histogram(face_sizes)
        << " dual " << format_histogram(dual_edge_valences) << " elements {";
     bool first = true;
     for (const auto& [name, n] : elements) {
@@ -115,8 +117,10 @@ ConfigurationComplex assemble(std::uint8_t mask, const std::vector<Index3>& octa
     return out;
 }
 
-template <class Filter>
-ConfigurationReport analyse(ConfigurationComplex built, Filter&& accept) {
+// `accept(p)`: the vertex at p gets the interior checks; `on_domain_boundary(p)`: p lies
+// on the domain's boundary (a boundary face all of whose points do is expected).
+template <class Filter, class OnBoundary>
+ConfigurationReport analyse(ConfigurationComplex built, Filter&& accept, OnBoundary&& on_domain_boundary) {
     ConfigurationReport r;
     r.mask = built.mask;
     r.built = true;
@@ -131,6 +135,38 @@ ConfigurationReport analyse(ConfigurationComplex built, Filter&& accept) {
     const Incidence inc(cx);
     for (std::size_t v = 0; v < cx.n_vertices(); ++v)
         if (!inc.is_boundary(VertexHandle(v)) && accept(cx.position(VertexHandle(v)))) ++r.checked_vertices;
+    // Open faces: boundary faces off the domain boundary; check what validate skips there.
+    std::vector<char> hole_vertex(cx.n_vertices(), 0), hole_edge(cx.n_edges(), 0);
+    for (std::size_t f = 0; f < cx.n_faces(); ++f) {
+        const FaceHandle fh(f);
+        if (!inc.is_boundary(fh)) continue;
+        const auto loop = cx.face_vertices(fh);
+        const bool expected = on_domain_boundary(cx, loop);
+        if (expected) continue;
+        ++r.open_faces;
+        for (VertexHandle v : loop) hole_vertex[v.index()] = 1;
+        for (EdgeHandle e : cx.face_edges(fh)) hole_edge[e.index()] = 1;
+    }
+    for (std::size_t v = 0; v < cx.n_vertices(); ++v) {
+        const VertexHandle vh(v);
+        if (!hole_vertex[v] || !accept(cx.position(vh))) continue;
+        if (const std::size_t n = inc.vertex_edges(vh).size(); n != 6) {
+            std::ostringstream os;
+            os << "vertex " << v << " at " << cx.position(vh) << " (on an open face) has " << n << " edges, expected 6";
+            r.validation.add({ViolationKind::VertexValence, vh, {}, {}, {}, os.str()});
+        }
+    }
+    for (std::size_t e = 0; e < cx.n_edges(); ++e) {
+        const EdgeHandle eh(e);
+        const auto& ends = cx.edge_vertices(eh);
+        if (!hole_edge[e] || !accept(cx.position(ends[0])) || !accept(cx.position(ends[1]))) continue;
+        if (const std::size_t n = inc.edge_cells(eh).size(); n != 4) {
+            std::ostringstream os;
+            os << "edge " << e << " " << cx.position(ends[0]) << "-" << cx.position(ends[1]) << " (on an open face) has "
+               << n << " cells, expected 4";
+            r.validation.add({ViolationKind::EdgeCellCount, {}, eh, {}, {}, os.str()});
+        }
+    }
     const DualResult dual = interior_dual(cx, inc);
     for (VertexHandle v : dual.mesh.primal_vertex)
         if (accept(cx.position(v))) ++r.hexes;
@@ -141,10 +177,10 @@ ConfigurationReport analyse(ConfigurationComplex built, Filter&& accept) {
     return r;
 }
 
-template <class Build, class Filter>
-ConfigurationReport check(std::uint8_t mask, Build&& build, Filter&& accept) {
+template <class Build, class Filter, class OnBoundary>
+ConfigurationReport check(std::uint8_t mask, Build&& build, Filter&& accept, OnBoundary&& on_boundary) {
     try {
-        return analyse(build(), accept);
+        return analyse(build(), accept, on_boundary);
     } catch (const std::exception& e) {
         ConfigurationReport r;
         r.mask = mask;
@@ -173,7 +209,7 @@ ConfigurationComplex build_periodic_configuration(std::uint8_t mask, const Trans
 ConfigurationReport check_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
                                                  const ElementLibrary& library) {
     return check(mask, [&] { return build_periodic_configuration(mask, rule, library); },
-                 [](const LatticePoint&) { return true; });
+                 [](const LatticePoint&) { return true; }, [](const CellComplex&, std::span<const VertexHandle>) { return false; });
 }
 
 ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {
@@ -189,9 +225,20 @@ ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& 
 
 ConfigurationReport check_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {
     const std::int64_t half = 2 * detail::common_unit(library);
-    return check(mask, [&] { return build_cube_window(mask, rule, library); }, [half](const LatticePoint& p) {
+    const auto inside = [half](const LatticePoint& p) {
         return -half < p.x && p.x < half && -half < p.y && p.y < half && -half < p.z && p.z < half;
-    });
+    };
+    // A boundary face is expected iff all its points lie in one plane of the cube's surface.
+    const auto on_surface = [half](const CellComplex& cx, std::span<const VertexHandle> loop) {
+        for (int a = 0; a < 3; ++a)
+            for (std::int64_t side : {-half, half}) {
+                bool all = true;
+                for (VertexHandle v : loop) all = all && cx.position(v)[a] == side;
+                if (all) return true;
+            }
+        return false;
+    };
+    return check(mask, [&] { return build_cube_window(mask, rule, library); }, inside, on_surface);
 }
 
 }  // namespace dualhex

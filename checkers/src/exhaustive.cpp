@@ -18,6 +18,7 @@ std::string failure_text(const ConfigurationReport& r, const char* where) {
     for (std::size_t k = 0; k < kViolationKinds; ++k)
         if (r.validation.per_kind[k] > 0)
             s += std::string(", ") + to_string(static_cast<ViolationKind>(k)) + " " + std::to_string(r.validation.per_kind[k]);
+    if (r.open_faces) s += ", " + std::to_string(r.open_faces) + " open faces";
     if (r.hexes != r.checked_vertices)
         s += ", " + std::to_string(r.checked_vertices - r.hexes) + " non-cube dual cells";
     return s;
@@ -51,7 +52,9 @@ ExhaustiveResult run_exhaustive(const TransitionRule& rule, const ElementLibrary
                 if (name != "fine") s.elements.insert(name);
         if (s.first_error.empty() && !p.ok()) s.first_error = failure_text(p, "torus");
         if (s.first_error.empty() && !w.ok()) s.first_error = failure_text(w, "window");
-        if (mask == s.representative && p.built) {
+        // Statistics of the representative, or of the first member whose torus was built.
+        if (p.built && (mask == s.representative || s.cells == 0)) {
+            s.shown = mask;
             s.cells = p.cells;
             s.hexes = p.hexes;
             s.checked_vertices = p.checked_vertices;
@@ -72,6 +75,7 @@ void print(std::ostream& os, const ExhaustiveResult& r) {
            << s.configurations << (s.configurations < 10 ? "        " : "       ") << s.periodic_passed << "/"
            << s.configurations << "  " << s.window_passed << "/" << s.configurations << "  ";
         if (s.cells) {
+            if (s.shown != s.representative) os << "[" << format_mask(s.shown) << "] ";
             os << s.cells << "  " << s.hexes << "  " << format_histogram(s.face_sizes) << " / "
                << format_histogram(s.dual_edge_valences);
         } else {

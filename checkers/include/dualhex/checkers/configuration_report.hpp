@@ -41,12 +41,18 @@ struct ConfigurationReport {
     std::size_t vertices = 0, edges = 0, faces = 0, cells = 0;
     std::size_t checked_vertices = 0;  ///< interior vertices that got the valence checks
     std::size_t hexes = 0;             ///< of those, the ones whose dual cell is a cube
+    /// Faces with one cell that do not lie on the domain's boundary (the torus has none;
+    /// the window's is the cube's surface): holes, e.g. where two placed elements do not
+    /// match. validate() treats them as boundary, so their vertices and edges would escape
+    /// the interior checks; they are checked here instead (6 edges per vertex, 4 cells per
+    /// edge), and violations are added to `validation` as VertexValence / EdgeCellCount.
+    std::size_t open_faces = 0;
     std::map<int, std::size_t> face_sizes;          ///< over all faces
     std::map<int, std::size_t> dual_edge_valences;  ///< interior faces (all vertices checked)
     /// Placements per element name; plain coarse hexes as "hex", fine hexes as "fine".
     std::map<std::string, std::size_t> elements;
 
-    [[nodiscard]] bool ok() const { return built && validation.ok() && hexes == checked_vertices; }
+    [[nodiscard]] bool ok() const { return built && validation.ok() && open_faces == 0 && hexes == checked_vertices; }
     /// One line: mask, ok/FAIL, counts, histograms (or the error).
     [[nodiscard]] std::string summary() const;
 };

@@ -16,7 +16,9 @@ struct ClassSummary {
     int fine = 0;                     ///< fine octants of every member
     int configurations = 0;           ///< members (orbit size)
     int periodic_passed = 0, window_passed = 0;
-    // The representative's torus (every vertex interior):
+    // The torus of `shown` (the representative, or the first member whose torus could
+    // be built, if the representative's could not):
+    std::uint8_t shown = 0;
     std::size_t cells = 0;
     std::size_t hexes = 0;  ///< interior vertices with a cube dual cell
     std::size_t checked_vertices = 0;
