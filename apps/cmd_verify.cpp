@@ -49,6 +49,7 @@ void run_verify(const VerifyOptions& opt) {
     const auto t_all = std::chrono::steady_clock::now();
     nlohmann::json checks = nlohmann::json::array();
     int passed = 0, failed = 0, skipped = 0;
+    nlohmann::json strong = nlohmann::json::object();  // the summary block
     for (const auto& c : registry.checks()) {
         if (!selected(c.name, opt.only)) continue;
         const auto t0 = std::chrono::steady_clock::now();
@@ -60,6 +61,15 @@ void run_verify(const VerifyOptions& opt) {
             out.summary = std::string("exception: ") + e.what();
         }
         const double dt = seconds_since(t0);
+        if (c.name == "schemes.strong-exhaustive" && out.details.is_object()) {
+            for (const char* key : {"configurations", "passed", "classes", "max_dual_edge_valence"})
+                if (out.details.contains(key)) strong[key] = out.details[key];
+        }
+        if (c.name == "schemes.strong-elements" && out.details.is_object()) {
+            nlohmann::json elements = nlohmann::json::object();
+            for (const auto& [name, e] : out.details.items()) elements[name] = e["computed"];
+            strong["elements"] = elements;
+        }
         switch (out.status) {
             case CheckStatus::kPass: ++passed; break;
             case CheckStatus::kFail: ++failed; break;
@@ -74,6 +84,7 @@ void run_verify(const VerifyOptions& opt) {
                           {"details", out.details}});
         if (!opt.json) {
             std::printf("%-4s  %-28s %8.3f s  %s\n", to_string(out.status), c.name.c_str(), dt, out.summary.c_str());
+            if (!out.report.empty()) std::fputs(out.report.c_str(), stdout);
             std::fflush(stdout);
         }
     }
@@ -85,6 +96,7 @@ void run_verify(const VerifyOptions& opt) {
                     {"failed", failed},
                     {"skipped", skipped},
                     {"seconds", total},
+                    {"strong", strong},
                     {"checks", checks}});
     } else {
         std::printf("%s: %d passed, %d failed, %d skipped in %.3f s\n", ok ? "OK" : "FAILED", passed, failed, skipped,

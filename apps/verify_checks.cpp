@@ -134,6 +134,7 @@ CheckRegistry default_checks() {
     add_symmetry_checks(r);
     add_configuration_checks(r);
     add_grid_checks(r);
+    add_scheme_checks(r);
     return r;
 }
 

@@ -16,6 +16,7 @@ struct CheckOutcome {
     CheckStatus status = CheckStatus::kFail;
     std::string summary;                             ///< one line for the table
     nlohmann::json details = nlohmann::json::object();  ///< machine-readable numbers
+    std::string report;  ///< optional multi-line detail, printed under the table row (text mode)
 };
 
 struct Check {
@@ -36,6 +37,7 @@ private:
 void add_symmetry_checks(CheckRegistry& registry);
 void add_configuration_checks(CheckRegistry& registry);
 void add_grid_checks(CheckRegistry& registry);
+void add_scheme_checks(CheckRegistry& registry);  // verify_schemes.cpp
 
 /// Every check that exists so far, in run order.
 CheckRegistry default_checks();
