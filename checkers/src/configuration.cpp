@@ -135,38 +135,7 @@ ConfigurationReport analyse(ConfigurationComplex built, Filter&& accept, OnBound
     const Incidence inc(cx);
     for (std::size_t v = 0; v < cx.n_vertices(); ++v)
         if (!inc.is_boundary(VertexHandle(v)) && accept(cx.position(VertexHandle(v)))) ++r.checked_vertices;
-    // Open faces: boundary faces off the domain boundary; check what validate skips there.
-    std::vector<char> hole_vertex(cx.n_vertices(), 0), hole_edge(cx.n_edges(), 0);
-    for (std::size_t f = 0; f < cx.n_faces(); ++f) {
-        const FaceHandle fh(f);
-        if (!inc.is_boundary(fh)) continue;
-        const auto loop = cx.face_vertices(fh);
-        const bool expected = on_domain_boundary(cx, loop);
-        if (expected) continue;
-        ++r.open_faces;
-        for (VertexHandle v : loop) hole_vertex[v.index()] = 1;
-        for (EdgeHandle e : cx.face_edges(fh)) hole_edge[e.index()] = 1;
-    }
-    for (std::size_t v = 0; v < cx.n_vertices(); ++v) {
-        const VertexHandle vh(v);
-        if (!hole_vertex[v] || !accept(cx.position(vh))) continue;
-        if (const std::size_t n = inc.vertex_edges(vh).size(); n != 6) {
-            std::ostringstream os;
-            os << "vertex " << v << " at " << cx.position(vh) << " (on an open face) has " << n << " edges, expected 6";
-            r.validation.add({ViolationKind::VertexValence, vh, {}, {}, {}, os.str()});
-        }
-    }
-    for (std::size_t e = 0; e < cx.n_edges(); ++e) {
-        const EdgeHandle eh(e);
-        const auto& ends = cx.edge_vertices(eh);
-        if (!hole_edge[e] || !accept(cx.position(ends[0])) || !accept(cx.position(ends[1]))) continue;
-        if (const std::size_t n = inc.edge_cells(eh).size(); n != 4) {
-            std::ostringstream os;
-            os << "edge " << e << " " << cx.position(ends[0]) << "-" << cx.position(ends[1]) << " (on an open face) has "
-               << n << " cells, expected 4";
-            r.validation.add({ViolationKind::EdgeCellCount, {}, eh, {}, {}, os.str()});
-        }
-    }
+    r.open_faces = detail::check_open_faces(cx, inc, accept, on_domain_boundary, r.validation);
     const DualResult dual = interior_dual(cx, inc);
     for (VertexHandle v : dual.mesh.primal_vertex)
         if (accept(cx.position(v))) ++r.hexes;
