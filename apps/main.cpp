@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     register_grid(app);
     register_verify(app);
     register_element(app);
+    register_table(app);
 
     try {
         app.parse(argc, argv);  // subcommand callbacks run in here
