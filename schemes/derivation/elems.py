@@ -154,3 +154,55 @@ def VCo():
     for k,(a,b) in enumerate([(P1,bend),(rot(P1),rot(bend)),(rot(rot(P1)),rot(rot(bend)))]):
         out+= [('VC.P1_%d'%k,a),('VC.bend_%d'%k,b)]
     return with_lid(out,'VC.lid')
+
+# ---------------- crossing variants (issue 4) ----------------
+def swyz(cells): return [[(p[0],p[2],p[1]) for p in f] for f in cells]
+
+def _low_x_chain_faceY():
+    """The chain over z=1 on face y=0 (runs along x, hugs z=12) passing BELOW at the
+    crossing (12,0,12): F's lower chain, cells p1 (x in [6,12]) and p2 (x in [0,6])."""
+    d=dict(Fo()); return d['Fo.p1'], d['Fo.p2']
+
+def bend_UU():
+    c1=(U,U,L); c2=(H,U,L); b1=(U,L,U); b2=(H,L,U)
+    return [[(H,0,0),(U,0,0),(U,0,H),(H,0,H)],[(H,0,0),(U,0,0),(U,H,0),(H,H,0)],
+            [(U,0,0),(U,0,H),b1,(U,H,U),(U,U,H),c1,(U,H,0)],
+            [(U,0,H),(H,0,H),b2,b1],[(U,H,0),(H,H,0),c2,c1],
+            [b1,b2,(U,H,U)],[c1,c2,(U,U,H)],
+            [(H,0,0),(H,0,H),b2,(U,H,U),(U,U,H),c2,(H,H,0)]]
+
+def E_variant(sy, sz):
+    """Concave edge along x; sy/sz: does the turning chain pass below ('L') or above ('U') at
+    the crossing on face y=0 / z=0."""
+    P1,Bq,p1c,p2c,bend_LU=_VS_parts()
+    E=dict(Eo())
+    cells=[]
+    if sy=='L': cells+=[('P1y',E['E.P1']),('By',E['E.B'])]
+    else:
+        p1,p2=_low_x_chain_faceY(); cells+=[('lowy1',p1),('lowy2',p2)]
+    if sz=='L': cells+=[('P1z',swyz(E['E.P1'])),('Cz',swyz(E['E.B']))]
+    else: cells+=[('lowz1',p1c),('lowz2',p2c)]
+    bend={('L','L'):E['E.bend'],('L','U'):bend_LU,('U','L'):swyz(bend_LU),('U','U'):bend_UU()}[(sy,sz)]
+    cells.append(('bend',bend))
+    return with_lid(cells,'lid')
+
+def unit_x(sy, sz):
+    E=dict(Eo()); P1,Bq,p1c,p2c,bend_LU=_VS_parts()
+    cells=[]
+    if sy=='L': cells.append(E['E.P1'])
+    if sz=='L': cells.append(swyz(E['E.P1']))
+    cells.append({('L','L'):E['E.bend'],('L','U'):bend_LU,('U','L'):swyz(bend_LU),('U','U'):bend_UU()}[(sy,sz)])
+    return cells
+
+def corner_variant(ly, lz, lx):
+    """Concave corner. ly: which chain passes below at the crossing on face y=0 ('X' = the
+    chain turning around the x-edge, or 'Z'); lz on face z=0 ('X' or 'Y'); lx on face x=0
+    ('Y' or 'Z')."""
+    s=lambda c:'L' if c else 'U'
+    ux=unit_x(s(ly=='X'), s(lz=='X'))
+    uy=[rot(f) for f in unit_x(s(lz=='Y'), s(lx=='Y'))]
+    uz=[rot(rot(f)) for f in unit_x(s(lx=='Z'), s(ly=='Z'))]
+    cells=[('c%d'%k,c) for k,c in enumerate(ux+uy+uz)]
+    return with_lid(cells,'lid')
+
+CORNER_ASSIGNMENTS=[(a,b,c) for a in 'XZ' for b in 'XY' for c in 'YZ']
