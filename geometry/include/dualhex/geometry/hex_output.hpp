@@ -1,0 +1,35 @@
+#pragma once
+// Writing an all-hex mesh: VTK legacy (.vtk, ASCII, VTK_HEXAHEDRON = 12), VTK XML
+// unstructured grid (.vtu, ASCII) and MEDIT (.mesh, "Hexahedra", 1-based, reference 0).
+//
+// Input : HexMesh — points, and hexes as 8 point ids in VTK_HEXAHEDRON order (0-3 the
+//         bottom quad, counter-clockwise seen from the top; 4-7 above 0-3). MEDIT uses the
+//         same corner order. A path and `overwrite`.
+// Output: the file. Throws std::runtime_error (message names the path) if it exists and
+//         overwrite is false (checked before anything is written), if it cannot be
+//         written, or if a hex refers to a point out of range. Numbers are written with
+//         17 significant digits (doubles round-trip).
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace dualhex::geometry {
+
+struct HexMesh {
+    std::vector<Eigen::Vector3d> points;
+    std::vector<std::array<int, 8>> hexes;
+};
+
+void write_vtk_legacy(const std::string& path, const HexMesh& mesh, bool overwrite = false);
+void write_vtu(const std::string& path, const HexMesh& mesh, bool overwrite = false);
+void write_medit(const std::string& path, const HexMesh& mesh, bool overwrite = false);
+/// By extension: .vtk, .vtu or .mesh (else std::invalid_argument).
+void write_hex_mesh(const std::string& path, const HexMesh& mesh, bool overwrite = false);
+
+/// Throws std::runtime_error("<path>: exists (pass overwrite to replace it)") if `path`
+/// exists and !overwrite. Shared by every writer of this layer.
+void check_can_write(const std::string& path, bool overwrite);
+
+}  // namespace dualhex::geometry

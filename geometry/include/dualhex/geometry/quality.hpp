@@ -1,0 +1,48 @@
+#pragma once
+// Mesh quality.
+//
+// Scaled Jacobian of a hex (VTK_HEXAHEDRON order), the standard (Verdict) definition:
+// at each of the 8 corners, the determinant of the three unit edge vectors to its
+// neighbours, taken in the right-handed order of the reference cube; the hex's value is
+// the minimum over the corners. 1 for a cube (any size/position), < 0 for an inverted or
+// tangled hex, 0 if a corner has a zero-length edge.
+//
+// Hausdorff distance (one-sided, sampled): from the boundary of a hex mesh to a surface.
+// Samples: the vertices and the centres of the boundary quads (faces of exactly one hex).
+// Distances are divided by the surface's bounding-box diagonal.
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dualhex/geometry/aabb_tree.hpp"
+#include "dualhex/geometry/hex_output.hpp"
+
+namespace dualhex::geometry {
+
+[[nodiscard]] double scaled_jacobian(const std::array<Eigen::Vector3d, 8>& corners);
+[[nodiscard]] double scaled_jacobian(const HexMesh& mesh, std::size_t hex);
+/// One value per hex.
+[[nodiscard]] std::vector<double> scaled_jacobians(const HexMesh& mesh);
+
+struct QualitySummary {
+    std::size_t hexes = 0;
+    double min = 0, mean = 0;
+    double share_negative = 0;  ///< fraction of hexes with SJ < 0
+    double share_below_02 = 0;  ///< fraction of hexes with SJ < 0.2
+};
+[[nodiscard]] QualitySummary summarize(const std::vector<double>& scaled_jacobians);
+
+/// The boundary quads of a hex mesh (faces used by exactly one hex), corner order as in
+/// the hex, outward.
+[[nodiscard]] std::vector<std::array<int, 4>> boundary_quads(const HexMesh& mesh);
+
+struct HausdorffResult {
+    std::size_t samples = 0;
+    double max = 0;   ///< max sample distance / bbox diagonal
+    double mean = 0;  ///< mean sample distance / bbox diagonal
+};
+/// One-sided: boundary of `mesh` -> surface of `tree`.
+[[nodiscard]] HausdorffResult boundary_to_surface_distance(const HexMesh& mesh, const AabbTree& tree);
+
+}  // namespace dualhex::geometry

@@ -1,0 +1,198 @@
+#include "dualhex/geometry/aabb_tree.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+#include "dualhex/geometry/triangle_geometry.hpp"
+
+namespace dualhex::geometry {
+
+using Eigen::AlignedBox3d;
+using Eigen::Vector3d;
+
+namespace {
+constexpr int kLeafSize = 4;
+
+// Slab test: the parameter interval [t0, t1] of the ray inside the box, if any.
+bool ray_box(const AlignedBox3d& box, const Vector3d& o, const Vector3d& inv_dir, double t_max, double& t_enter) {
+    double t0 = 0, t1 = t_max;
+    for (int a = 0; a < 3; ++a) {
+        double ta = (box.min()[a] - o[a]) * inv_dir[a];
+        double tb = (box.max()[a] - o[a]) * inv_dir[a];
+        if (ta > tb) std::swap(ta, tb);
+        if (std::isnan(ta) || std::isnan(tb)) {  // 0 * inf: origin on the slab plane
+            if (o[a] < box.min()[a] || o[a] > box.max()[a]) return false;
+            continue;
+        }
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        if (t0 > t1) return false;
+    }
+    t_enter = t0;
+    return true;
+}
+}  // namespace
+
+AabbTree::AabbTree(TriangleSurface surface) : surface_(std::move(surface)) {
+    if (surface_.triangles.empty()) throw SurfaceError(surface_.source, "AABB tree of an empty surface");
+    const auto n = static_cast<int>(surface_.triangles.size());
+    order_.resize(n);
+    std::iota(order_.begin(), order_.end(), 0);
+    centroids_.resize(n);
+    for (int t = 0; t < n; ++t) {
+        const auto& tri = surface_.triangles[t];
+        centroids_[t] = (surface_.vertices[tri[0]] + surface_.vertices[tri[1]] + surface_.vertices[tri[2]]) / 3.0;
+    }
+    nodes_.reserve(2 * n / kLeafSize + 2);
+    build(0, n);
+}
+
+int AabbTree::build(int first, int count) {
+    const int id = static_cast<int>(nodes_.size());
+    nodes_.push_back({});
+    AlignedBox3d box, cbox;
+    for (int n = first; n < first + count; ++n) {
+        for (int c : surface_.triangles[order_[n]]) box.extend(surface_.vertices[c]);
+        cbox.extend(centroids_[order_[n]]);
+    }
+    nodes_[id].box = box;
+    if (count <= kLeafSize) {
+        nodes_[id].first = first;
+        nodes_[id].count = count;
+        return id;
+    }
+    int axis = 0;
+    cbox.sizes().maxCoeff(&axis);
+    const int mid = first + count / 2;
+    std::nth_element(order_.begin() + first, order_.begin() + mid, order_.begin() + first + count,
+                     [&](int a, int b) { return centroids_[a][axis] < centroids_[b][axis]; });
+    const int left = build(first, mid - first);
+    const int right = build(mid, first + count - mid);
+    nodes_[id].left = left;
+    nodes_[id].right = right;
+    return id;
+}
+
+ClosestPoint AabbTree::closest_point(const Vector3d& p) const {
+    ClosestPoint best;
+    best.squared_distance = std::numeric_limits<double>::infinity();
+    std::vector<int> stack{0};
+    while (!stack.empty()) {
+        const Node& node = nodes_[stack.back()];
+        stack.pop_back();
+        if (node.box.squaredExteriorDistance(p) >= best.squared_distance) continue;
+        if (node.left < 0) {
+            for (int n = node.first; n < node.first + node.count; ++n) {
+                const auto& tri = surface_.triangles[order_[n]];
+                const Vector3d q = closest_point_on_triangle(p, surface_.vertices[tri[0]], surface_.vertices[tri[1]],
+                                                             surface_.vertices[tri[2]]);
+                const double d = (q - p).squaredNorm();
+                if (d < best.squared_distance) best = {q, d, order_[n]};
+            }
+            continue;
+        }
+        const double dl = nodes_[node.left].box.squaredExteriorDistance(p);
+        const double dr = nodes_[node.right].box.squaredExteriorDistance(p);
+        // push the farther child first so the nearer one is visited first
+        if (dl < dr) {
+            stack.push_back(node.right);
+            stack.push_back(node.left);
+        } else {
+            stack.push_back(node.left);
+            stack.push_back(node.right);
+        }
+    }
+    return best;
+}
+
+bool AabbTree::intersects_box(const AlignedBox3d& box) const {
+    std::vector<int> stack{0};
+    while (!stack.empty()) {
+        const Node& node = nodes_[stack.back()];
+        stack.pop_back();
+        if (!node.box.intersects(box)) continue;
+        if (node.left < 0) {
+            for (int n = node.first; n < node.first + node.count; ++n) {
+                const auto& tri = surface_.triangles[order_[n]];
+                if (triangle_box_overlap(box, surface_.vertices[tri[0]], surface_.vertices[tri[1]],
+                                         surface_.vertices[tri[2]]))
+                    return true;
+            }
+            continue;
+        }
+        stack.push_back(node.left);
+        stack.push_back(node.right);
+    }
+    return false;
+}
+
+std::vector<int> AabbTree::triangles_in_box(const AlignedBox3d& box) const {
+    std::vector<int> out;
+    std::vector<int> stack{0};
+    while (!stack.empty()) {
+        const Node& node = nodes_[stack.back()];
+        stack.pop_back();
+        if (!node.box.intersects(box)) continue;
+        if (node.left < 0) {
+            for (int n = node.first; n < node.first + node.count; ++n) {
+                const auto& tri = surface_.triangles[order_[n]];
+                if (triangle_box_overlap(box, surface_.vertices[tri[0]], surface_.vertices[tri[1]],
+                                         surface_.vertices[tri[2]]))
+                    out.push_back(order_[n]);
+            }
+            continue;
+        }
+        stack.push_back(node.left);
+        stack.push_back(node.right);
+    }
+    return out;
+}
+
+template <class Visit>
+void AabbTree::ray_walk(const Vector3d& origin, const Vector3d& dir, double t_max_init, Visit&& visit) const {
+    const Vector3d inv = dir.cwiseInverse();
+    double t_max = t_max_init;
+    std::vector<int> stack{0};
+    while (!stack.empty()) {
+        const Node& node = nodes_[stack.back()];
+        stack.pop_back();
+        double t_enter = 0;
+        if (!ray_box(node.box, origin, inv, t_max, t_enter)) continue;
+        if (node.left < 0) {
+            for (int n = node.first; n < node.first + node.count; ++n) visit(order_[n], t_max);
+            continue;
+        }
+        stack.push_back(node.left);
+        stack.push_back(node.right);
+    }
+}
+
+std::optional<RayHit> AabbTree::first_hit(const Vector3d& origin, const Vector3d& dir, double t_min, int ignore) const {
+    std::optional<RayHit> best;
+    ray_walk(origin, dir, std::numeric_limits<double>::infinity(), [&](int t, double& t_max) {
+        if (t == ignore) return;
+        const auto& tri = surface_.triangles[t];
+        const auto hit = ray_triangle(origin, dir, surface_.vertices[tri[0]], surface_.vertices[tri[1]],
+                                      surface_.vertices[tri[2]], t_min);
+        if (hit && hit->t < t_max) {
+            t_max = hit->t;
+            best = RayHit{hit->t, t, origin + hit->t * dir};
+        }
+    });
+    return best;
+}
+
+std::vector<RayHit> AabbTree::all_hits(const Vector3d& origin, const Vector3d& dir, double t_min) const {
+    std::vector<RayHit> hits;
+    ray_walk(origin, dir, std::numeric_limits<double>::infinity(), [&](int t, double&) {
+        const auto& tri = surface_.triangles[t];
+        const auto hit = ray_triangle(origin, dir, surface_.vertices[tri[0]], surface_.vertices[tri[1]],
+                                      surface_.vertices[tri[2]], t_min);
+        if (hit) hits.push_back({hit->t, t, origin + hit->t * dir});
+    });
+    std::sort(hits.begin(), hits.end(), [](const RayHit& a, const RayHit& b) { return a.t < b.t; });
+    return hits;
+}
+
+}  // namespace dualhex::geometry

@@ -1,0 +1,110 @@
+#include "dualhex/geometry/quality.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace dualhex::geometry {
+
+using Eigen::Vector3d;
+
+double scaled_jacobian(const std::array<Vector3d, 8>& x) {
+    // For corner c: its neighbours (a, b, d) such that (x[a]-x[c], x[b]-x[c], x[d]-x[c]) is
+    // right-handed on the reference cube.
+    static constexpr int kCorner[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
+                                          {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+    double worst = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 8; ++c) {
+        Vector3d e[3];
+        for (int n = 0; n < 3; ++n) {
+            e[n] = x[kCorner[c][n]] - x[c];
+            const double len = e[n].norm();
+            if (!(len > 0)) return 0.0;
+            e[n] /= len;
+        }
+        worst = std::min(worst, e[0].dot(e[1].cross(e[2])));
+    }
+    return worst;
+}
+
+double scaled_jacobian(const HexMesh& mesh, std::size_t hex) {
+    std::array<Vector3d, 8> x;
+    for (int n = 0; n < 8; ++n) x[n] = mesh.points[mesh.hexes[hex][n]];
+    return scaled_jacobian(x);
+}
+
+std::vector<double> scaled_jacobians(const HexMesh& mesh) {
+    std::vector<double> out(mesh.hexes.size());
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h) out[h] = scaled_jacobian(mesh, h);
+    return out;
+}
+
+QualitySummary summarize(const std::vector<double>& sj) {
+    QualitySummary s;
+    s.hexes = sj.size();
+    if (sj.empty()) return s;
+    s.min = *std::min_element(sj.begin(), sj.end());
+    double sum = 0;
+    std::size_t neg = 0, low = 0;
+    for (double v : sj) {
+        sum += v;
+        neg += v < 0;
+        low += v < 0.2;
+    }
+    const auto n = static_cast<double>(sj.size());
+    s.mean = sum / n;
+    s.share_negative = static_cast<double>(neg) / n;
+    s.share_below_02 = static_cast<double>(low) / n;
+    return s;
+}
+
+std::vector<std::array<int, 4>> boundary_quads(const HexMesh& mesh) {
+    // VTK hex faces, outward (right-hand normal points out of the hex).
+    static constexpr int kFace[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    std::map<std::array<int, 4>, std::pair<int, std::array<int, 4>>> faces;
+    for (const auto& h : mesh.hexes)
+        for (const auto& f : kFace) {
+            std::array<int, 4> quad{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+            std::array<int, 4> key = quad;
+            std::sort(key.begin(), key.end());
+            auto& slot = faces[key];
+            if (slot.first++ == 0) slot.second = quad;
+        }
+    std::vector<std::array<int, 4>> out;
+    for (const auto& [key, slot] : faces)
+        if (slot.first == 1) out.push_back(slot.second);
+    return out;
+}
+
+HausdorffResult boundary_to_surface_distance(const HexMesh& mesh, const AabbTree& tree) {
+    const auto quads = boundary_quads(mesh);
+    std::vector<char> on_boundary(mesh.points.size(), 0);
+    std::vector<Vector3d> samples;
+    for (const auto& q : quads) {
+        Vector3d centre = Vector3d::Zero();
+        for (int v : q) {
+            on_boundary[v] = 1;
+            centre += mesh.points[v];
+        }
+        samples.push_back(centre / 4.0);
+    }
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+        if (on_boundary[v]) samples.push_back(mesh.points[v]);
+    HausdorffResult r;
+    r.samples = samples.size();
+    if (samples.empty()) return r;
+    const double diag = tree.bounds().diagonal().norm();
+    double sum = 0;
+    for (const auto& p : samples) {
+        const double d = std::sqrt(tree.squared_distance(p));
+        r.max = std::max(r.max, d);
+        sum += d;
+    }
+    r.max /= diag;
+    r.mean = sum / static_cast<double>(samples.size()) / diag;
+    return r;
+}
+
+}  // namespace dualhex::geometry
