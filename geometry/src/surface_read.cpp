@@ -1,6 +1,7 @@
 // read_surface: OpenMesh's readers feed a minimal importer that only records the polygon
 // soup (points and vertex index lists). No half-edge structure is built, so OpenMesh never
 // silently drops a non-manifold face; closedness is then checked by clean_surface.
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 
@@ -85,8 +86,9 @@ TriangleSurface read_surface(const std::string& path, const SurfaceReadOptions& 
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) throw SurfaceError(path, "no such file");
     if (!std::ifstream(path)) throw SurfaceError(path, "cannot open for reading");
-    const std::string ext = fs::path(path).extension().string();
-    if (!IO::IOManager().can_read(ext.empty() ? std::string{} : ext.substr(1)))
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply")
         throw SurfaceError(path, "unknown surface format '" + ext + "' (expected .obj, .off, .stl, .ply)");
 
     SoupImporter soup;
