@@ -206,3 +206,76 @@ def corner_variant(ly, lz, lx):
     return with_lid(cells,'lid')
 
 CORNER_ASSIGNMENTS=[(a,b,c) for a in 'XZ' for b in 'XY' for c in 'YZ']
+
+# ---------------- weak balance (issue 5) ----------------
+Q=U//4  # 3: a level-2 (twice finer) half-leaf step in level-0 units
+
+def twin_tets(c, axis):
+    """The two bend tetrahedra of the twice-finer transition around a convex edge along
+    `axis`, meeting at point c on that edge (c is where the finer octant's mid-plane
+    crosses the edge)."""
+    o=[a for a in range(3) if a!=axis]
+    def P(da, db, dc):
+        p=list(c); p[axis]+=da; p[o[0]]+=db; p[o[1]]+=dc; return tuple(p)
+    t=[]
+    for s in (-1,1):
+        e=P(s*Q,0,0); u=P(0,Q,0); v=P(0,0,Q)
+        t.append([[c,e,u],[c,e,v],[c,u,v],[e,u,v]])
+    return t
+
+def E_MR():
+    """E whose concave x-edge also carries the twice-finer hanging nodes (the octant across
+    the edge is two levels finer): the finer transition's chains bend around that convex
+    edge through this leaf with two tetrahedra at (6,0,0)."""
+    E=dict(Eo())
+    t1,t2=twin_tets((H,0,0),0)
+    r2=(U,L,H); r3=(U,H,L)
+    bend=[[(H,0,Q),(H+Q,0,0),(U,0,0),(U,0,H),(H,0,H)],[(H,Q,0),(H+Q,0,0),(U,0,0),(U,H,0),(H,H,0)],
+          [(U,0,0),(U,0,H),r2,r3,(U,H,0)],[(H,0,H),(U,0,H),r2],[(H,H,0),(U,H,0),r3],
+          [(H+Q,0,0),(H,Q,0),(H,0,Q)],
+          [(H,0,H),(H,0,Q),(H,Q,0),(H,H,0),r3,r2]]
+    cells=[('P1',E['E.P1']),('P1b',E['E.P1b']),('B',E['E.B']),('C',E['E.C']),('bend',bend),('tet1',t1),('tet2',t2)]
+    return with_lid(cells,'lid')
+
+def truncate(cells, c, step=Q):
+    """Cut vertex c off every cell: each face through c gets two new vertices (at `step` from c
+    along its two edges at c); each cell with a corner at c gets the cap polygon as a new
+    face, and that corner becomes a cell of its own (a tetrahedron for a trihedral corner).
+    This is how the twice-finer convex transition's bend enters a coarse leaf whose concave
+    edge carries the extra hanging nodes (the MR elements)."""
+    def toward(a, b):
+        d=[b[i]-a[i] for i in range(3)]; n=max(abs(x) for x in d)
+        # edges at c are axis-aligned or diagonal within a face; step along the edge
+        assert n>0
+        return tuple(a[i]+(d[i]*step)//n for i in range(3))
+    out=[]; corners=[]
+    for name,fl in cells:
+        newf=[]; cap_edges=[]
+        for f in fl:
+            if c not in f: newf.append(f); continue
+            k=f.index(c); prev=f[k-1]; nxt=f[(k+1)%len(f)]
+            a=toward(c,prev); b=toward(c,nxt)
+            newf.append(f[:k]+[a,b]+f[k+1:])
+            cap_edges.append((a,b))
+        if not cap_edges: out.append((name,fl)); continue
+        # chain the cap edges into a loop
+        adj={}
+        for a,b in cap_edges: adj.setdefault(a,[]).append(b); adj.setdefault(b,[]).append(a)
+        start=cap_edges[0][0]; loop=[start]; prev=None; cur=start
+        while True:
+            nx=[q for q in adj[cur] if q!=prev][0]
+            if nx==start: break
+            loop.append(nx); prev,cur=cur,nx
+        newf.append(loop)
+        out.append((name,newf))
+        corner=[[c,a,b] for a,b in cap_edges]+[loop]
+        corners.append((name+'.corner',corner))
+    return out+corners
+
+def rename(cells,tag): return [(tag+'.'+n.split('.',1)[-1],f) for n,f in cells]
+def E_MR2(): return truncate(Eo(),(H,0,0))
+def VS_MR(): return truncate(VSo(),(H,0,0))
+def VC_MR(k):
+    cells=VCo()
+    for c in [(H,0,0),(0,H,0),(0,0,H)][:k]: cells=truncate(cells,c)
+    return cells
