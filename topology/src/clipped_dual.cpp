@@ -1,0 +1,411 @@
+// The clipped dual (see clipped_dual.hpp for the construction and why it is a cube).
+#include "dualhex/topology/clipped_dual.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <unordered_map>
+
+namespace dualhex {
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+// Does half-face h walk the directed edge a -> b?
+bool walks(const CellComplex& k, HalfFaceHandle h, VertexHandle a, VertexHandle b) {
+    const auto loop = k.face_vertices(h.face());
+    const std::size_t n = loop.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        if (loop[i] != a) continue;
+        const VertexHandle next = h.side() == 0 ? loop[i + 1 == n ? 0 : i + 1] : loop[i == 0 ? n - 1 : i - 1];
+        if (next == b) return true;
+    }
+    return false;
+}
+
+// The vertex before v in half-face h's loop, or an invalid handle.
+VertexHandle before(const CellComplex& k, HalfFaceHandle h, VertexHandle v) {
+    const auto loop = k.face_vertices(h.face());
+    const std::size_t n = loop.size();
+    for (std::size_t i = 0; i < n; ++i)
+        if (loop[i] == v) return h.side() == 0 ? loop[i == 0 ? n - 1 : i - 1] : loop[i + 1 == n ? 0 : i + 1];
+    return {};
+}
+
+// Per-vertex scratch: up to 6 face loops (more = not a cube; we stop collecting).
+struct Faces {
+    static constexpr std::size_t kMaxFaces = 8, kMaxLoop = 12;
+    std::array<std::array<std::uint32_t, kMaxLoop>, kMaxFaces> loop{};
+    std::array<std::uint8_t, kMaxFaces> size{};
+    std::size_t n = 0;
+    bool overflow = false;
+    const char* why = nullptr;  // first construction failure
+
+    void clear() {
+        n = 0;
+        overflow = false;
+        why = nullptr;
+    }
+    // Starts a new face; false (and overflow) if there are too many.
+    bool open() {
+        if (n == kMaxFaces) {
+            overflow = true;
+            return false;
+        }
+        size[n++] = 0;
+        return true;
+    }
+    void push(std::uint32_t id) {
+        std::uint8_t& s = size[n - 1];
+        if (s == kMaxLoop) {
+            overflow = true;
+            return;
+        }
+        loop[n - 1][s++] = id;
+    }
+    void fail(const char* reason) {
+        if (!why) why = reason;
+    }
+};
+
+class Builder {
+public:
+    Builder(const CellComplex& k, const Incidence& inc, const LatticePoint& lo, const LatticePoint& hi)
+        : k_(k), inc_(inc), lo_(lo), hi_(hi) {}
+
+    ClippedDual run() {
+        ClippedDual out;
+        out.box_min = lo_;
+        out.box_max = hi_;
+        const std::size_t nv = k_.n_vertices(), ne = k_.n_edges(), nf = k_.n_faces(), nc = k_.n_cells();
+
+        // Dual vertices of cells: centroid of the distinct vertices.
+        out.points.assign(nc, RationalPoint{{0, 0, 0}, 0});
+        for (std::size_t v = 0; v < nv; ++v) {
+            const LatticePoint& p = k_.position(VertexHandle(v));
+            for (CellHandle c : inc_.vertex_cells(VertexHandle(v))) {
+                RationalPoint& r = out.points[c.index()];
+                r.sum = r.sum + p;
+                ++r.denominator;
+            }
+        }
+        out.kind.assign(nc, DualVertexKind::Cell);
+        out.primal.resize(nc);
+        for (std::size_t c = 0; c < nc; ++c) out.primal[c] = static_cast<std::uint32_t>(c);
+
+        // Vertex planes: bit 2a (lo side) / 2a+1 (hi side) of axis a.
+        vertex_planes_.assign(nv, 0);
+        for (std::size_t v = 0; v < nv; ++v) vertex_planes_[v] = planes_of(k_.position(VertexHandle(v)));
+
+        // Boundary faces: the plane they lie in (a single bit), or none (a hole).
+        face_plane_.assign(nf, 0);
+        face_dual_.assign(nf, kNone);
+        for (std::size_t f = 0; f < nf; ++f) {
+            const FaceHandle fh(f);
+            if (!inc_.is_boundary(fh)) continue;
+            unsigned common = 0x3F;
+            RationalPoint r{{0, 0, 0}, 0};
+            for (VertexHandle v : k_.face_vertices(fh)) {
+                common &= vertex_planes_[v.index()];
+                r.sum = r.sum + k_.position(v);
+                ++r.denominator;
+            }
+            if (common == 0) continue;  // off the box: its vertices' cells will fail
+            face_plane_[f] = static_cast<std::uint8_t>(common & (~common + 1));  // lowest bit
+            face_dual_[f] = add(out, r, DualVertexKind::BoundaryFace, f);
+        }
+
+        // Crease edges: two boundary faces in planes of different axes.
+        edge_dual_.assign(ne, kNone);
+        for (std::size_t e = 0; e < ne; ++e) {
+            const EdgeHandle eh(e);
+            if (!inc_.is_boundary(eh)) continue;
+            unsigned planes[2] = {0, 0};
+            int n = 0;
+            for (FaceHandle f : inc_.edge_faces(eh))
+                if (inc_.is_boundary(f) && n < 2) planes[n++] = face_plane_[f.index()];
+            if (n != 2 || planes[0] == 0 || planes[1] == 0 || axis_of(planes[0]) == axis_of(planes[1])) continue;
+            const auto& [a, b] = k_.edge_vertices(eh);
+            edge_dual_[e] = add(out, {k_.position(a) + k_.position(b), 2}, DualVertexKind::CreaseEdge, e);
+        }
+
+        // Corners: on three box planes (one per axis).
+        vertex_dual_.assign(nv, kNone);
+        for (std::size_t v = 0; v < nv; ++v)
+            if (axes_of(vertex_planes_[v]) == 3)
+                vertex_dual_[v] = add(out, {k_.position(VertexHandle(v)), 1}, DualVertexKind::Corner, v);
+
+        out.hexes.reserve(nv);
+        out.primal_vertex.reserve(nv);
+        for (std::size_t v = 0; v < nv; ++v) {
+            const VertexHandle vh(v);
+            faces_.clear();
+            collect(vh);
+            std::array<std::uint32_t, 8> hex{};
+            if (const char* defect = faces_.why ? faces_.why : cube(hex)) {
+                out.errors.push_back({vh, std::string("clipped dual cell of vertex ") + std::to_string(v) + ": " + defect});
+            } else {
+                out.hexes.push_back(hex);
+                out.primal_vertex.push_back(vh);
+            }
+        }
+        return out;
+    }
+
+private:
+    static int axis_of(unsigned plane_bit) { return plane_bit & 0x3 ? 0 : plane_bit & 0xC ? 1 : 2; }
+    static int axes_of(unsigned planes) {
+        return ((planes & 0x3) != 0) + ((planes & 0xC) != 0) + ((planes & 0x30) != 0);
+    }
+    unsigned planes_of(const LatticePoint& p) const {
+        unsigned m = 0;
+        for (int a = 0; a < 3; ++a) {
+            if (p[a] == lo_[a]) m |= 1U << (2 * a);
+            if (p[a] == hi_[a]) m |= 1U << (2 * a + 1);
+        }
+        return m;
+    }
+    static std::uint32_t add(ClippedDual& out, const RationalPoint& r, DualVertexKind kind, std::size_t primal) {
+        out.points.push_back(r);
+        out.kind.push_back(kind);
+        out.primal.push_back(static_cast<std::uint32_t>(primal));
+        return static_cast<std::uint32_t>(out.points.size() - 1);
+    }
+
+    // The dual face loops of v's clipped dual cell, into faces_.
+    void collect(VertexHandle v) {
+        for (EdgeHandle e : inc_.vertex_edges(v)) {
+            if (!faces_.open()) return faces_.fail("more than 6 dual faces");
+            edge_face(v, e);
+        }
+        const unsigned planes = vertex_planes_[v.index()];
+        for (unsigned bit = 1; bit < 64; bit <<= 1) {
+            if (!(planes & bit)) continue;
+            if (!faces_.open()) return faces_.fail("more than 6 dual faces");
+            cap_face(v, bit);
+        }
+        if (faces_.overflow) faces_.fail("a dual face with too many vertices");
+    }
+
+    // The face through which cell c leaves, turning counter-clockwise about v -> w
+    // (c's half-face walking v -> w), or an invalid handle.
+    FaceHandle exit_face(EdgeHandle e, CellHandle c, VertexHandle v, VertexHandle w) const {
+        for (FaceHandle f : inc_.edge_faces(e)) {
+            const auto cells = inc_.face_cells(f);
+            const auto hfs = inc_.face_halffaces(f);
+            for (std::size_t i = 0; i < cells.size(); ++i)
+                if (cells[i] == c && walks(k_, hfs[i], v, w)) return f;
+        }
+        return {};
+    }
+
+    // Dual face of edge e at v: cells counter-clockwise about v -> w; on the surface
+    // [entry face, cells..., exit face, crease].
+    void edge_face(VertexHandle v, EdgeHandle e) {
+        const auto [a, b] = k_.edge_vertices(e);
+        const VertexHandle w = a == v ? b : a;
+        constexpr int kMaxSteps = 12;
+        if (!inc_.is_boundary(e)) {
+            const auto cells = inc_.edge_cells(e);
+            if (cells.empty()) return faces_.fail("an edge without cells");
+            CellHandle c = cells[0];
+            for (int step = 0;; ++step) {
+                if (step == kMaxSteps) return faces_.fail("cells around an interior edge do not close");
+                faces_.push(c.index());
+                const FaceHandle f = exit_face(e, c, v, w);
+                if (!f.valid()) return faces_.fail("cells around an interior edge are not consistently oriented");
+                c = inc_.other_cell(f, c);
+                if (!c.valid()) return faces_.fail("a face around an interior edge without two cells");
+                if (c == cells[0]) return;
+            }
+        }
+        FaceHandle entry;
+        for (FaceHandle f : inc_.edge_faces(e))
+            if (inc_.is_boundary(f) && walks(k_, inc_.face_halffaces(f)[0], w, v)) entry = f;
+        if (!entry.valid()) return faces_.fail("a boundary edge without an entry boundary face");
+        if (face_dual_[entry.index()] == kNone) return faces_.fail("a boundary face off the box surface (a hole)");
+        faces_.push(face_dual_[entry.index()]);
+        CellHandle c = inc_.face_cells(entry)[0];
+        for (int step = 0;; ++step) {
+            if (step == kMaxSteps) return faces_.fail("cells around a boundary edge do not reach the surface");
+            faces_.push(c.index());
+            const FaceHandle f = exit_face(e, c, v, w);
+            if (!f.valid()) return faces_.fail("cells around a boundary edge are not consistently oriented");
+            if (inc_.is_boundary(f)) {
+                if (face_dual_[f.index()] == kNone) return faces_.fail("a boundary face off the box surface (a hole)");
+                faces_.push(face_dual_[f.index()]);
+                break;
+            }
+            c = inc_.other_cell(f, c);
+            if (!c.valid()) return faces_.fail("a face around a boundary edge with more than two cells");
+        }
+        if (edge_dual_[e.index()] != kNone) faces_.push(edge_dual_[e.index()]);
+    }
+
+    // A crease edge at v lying in `plane` other than `not_this`.
+    EdgeHandle crease_in_plane(VertexHandle v, unsigned plane, EdgeHandle not_this) const {
+        for (EdgeHandle e : inc_.vertex_edges(v)) {
+            if (e == not_this || edge_dual_[e.index()] == kNone) continue;
+            const auto& [a, b] = k_.edge_vertices(e);
+            if (vertex_planes_[a.index()] & vertex_planes_[b.index()] & plane) return e;
+        }
+        return {};
+    }
+
+    // The boundary face in `plane` at edge e other than `not_this`.
+    FaceHandle surface_face(EdgeHandle e, unsigned plane, FaceHandle not_this) const {
+        for (FaceHandle f : inc_.edge_faces(e))
+            if (f != not_this && inc_.is_boundary(f) && face_plane_[f.index()] == plane) return f;
+        return {};
+    }
+
+    // The cap of v in a box plane: its boundary faces around v counter-clockwise seen from
+    // outside, crease edges (and the corner) closing the loop.
+    void cap_face(VertexHandle v, unsigned plane) {
+        FaceHandle start;
+        for (FaceHandle f : inc_.vertex_faces(v))
+            if (inc_.is_boundary(f) && face_plane_[f.index()] == plane) {
+                start = f;
+                break;
+            }
+        if (!start.valid()) return faces_.fail("no boundary face in a box plane through the vertex");
+        FaceHandle f = start;
+        for (int step = 0;; ++step) {
+            if (step == 12) return faces_.fail("the boundary faces around a surface vertex do not close");
+            faces_.push(face_dual_[f.index()]);
+            // Counter-clockwise from outside, the next face is across the edge (v, before v).
+            const VertexHandle a = before(k_, inc_.face_halffaces(f)[0], v);
+            const EdgeHandle e = a.valid() ? inc_.find_edge(v, a) : EdgeHandle{};
+            if (!e.valid()) return faces_.fail("a boundary face loop without the vertex");
+            FaceHandle next;
+            if (edge_dual_[e.index()] != kNone) {
+                faces_.push(edge_dual_[e.index()]);
+                if (vertex_dual_[v.index()] != kNone) faces_.push(vertex_dual_[v.index()]);
+                const EdgeHandle e2 = crease_in_plane(v, plane, e);
+                if (!e2.valid()) return faces_.fail("a crease vertex with one crease edge in a plane");
+                faces_.push(edge_dual_[e2.index()]);
+                next = surface_face(e2, plane, {});
+            } else {
+                next = surface_face(e, plane, f);
+            }
+            if (!next.valid()) return faces_.fail("a surface edge without a second boundary face in its plane");
+            if (next == start) return;
+            f = next;
+        }
+    }
+
+    // Checks faces_ is an oriented combinatorial cube; fills hex (VTK order) or returns why not.
+    const char* cube(std::array<std::uint32_t, 8>& hex) const {
+        if (faces_.n != 6) return faces_.n < 6 ? "fewer than 6 dual faces" : "more than 6 dual faces";
+        std::array<std::uint32_t, 8> verts{};
+        std::size_t nverts = 0;
+        std::array<std::pair<std::uint32_t, std::uint32_t>, 24> directed{};
+        std::size_t nd = 0;
+        for (std::size_t i = 0; i < 6; ++i) {
+            if (faces_.size[i] != 4) return "a dual face that is not a quadrilateral";
+            const auto& q = faces_.loop[i];
+            for (std::size_t j = 0; j < 4; ++j) {
+                for (std::size_t l = j + 1; l < 4; ++l)
+                    if (q[j] == q[l]) return "a dual face repeats a vertex";
+                directed[nd++] = {q[j], q[(j + 1) % 4]};
+                if (std::find(verts.begin(), verts.begin() + static_cast<std::ptrdiff_t>(nverts), q[j]) ==
+                    verts.begin() + static_cast<std::ptrdiff_t>(nverts)) {
+                    if (nverts == 8) return "more than 8 dual vertices";
+                    verts[nverts++] = q[j];
+                }
+            }
+        }
+        if (nverts != 8) return "fewer than 8 dual vertices";
+        std::sort(directed.begin(), directed.end());
+        if (std::adjacent_find(directed.begin(), directed.end()) != directed.end())
+            return "a dual edge walked twice in the same direction (faces not consistently oriented)";
+        for (const auto& [a, b] : directed)
+            if (!std::binary_search(directed.begin(), directed.end(), std::pair{b, a}))
+                return "a dual edge in only one dual face";
+        // 24 directed = 12 edges, each in two faces with opposite orientations; degree 3 each.
+        std::array<std::array<std::uint32_t, 3>, 8> nbr{};
+        std::array<int, 8> deg{};
+        auto slot = [&](std::uint32_t id) {
+            return static_cast<std::size_t>(std::find(verts.begin(), verts.end(), id) - verts.begin());
+        };
+        for (const auto& [a, b] : directed) {
+            const std::size_t s = slot(a);
+            if (deg[s] == 3) return "a dual vertex of degree above 3";
+            nbr[s][static_cast<std::size_t>(deg[s]++)] = b;
+        }
+        for (int d : deg)
+            if (d != 3) return "a dual vertex of degree below 3";
+        // Connected (V - E + F = 2 then makes it a sphere, the cube).
+        unsigned seen = 1, frontier = 1;
+        while (frontier) {
+            unsigned next = 0;
+            for (std::size_t s = 0; s < 8; ++s)
+                if (frontier & (1U << s))
+                    for (std::uint32_t n : nbr[s]) next |= 1U << slot(n);
+            frontier = next & ~seen;
+            seen |= next;
+        }
+        if (seen != 0xFF) return "the dual cell is disconnected";
+        const auto& q = faces_.loop[0];
+        hex = {q[0], q[3], q[2], q[1], 0, 0, 0, 0};
+        for (std::size_t i = 0; i < 4; ++i) {
+            const auto& nb = nbr[slot(hex[i])];
+            int found = 0;
+            for (std::uint32_t n : nb)
+                if (std::find(hex.begin(), hex.begin() + 4, n) == hex.begin() + 4) hex[i + 4] = n, ++found;
+            if (found != 1) return "the dual cell is not a cube";
+        }
+        return nullptr;
+    }
+
+    const CellComplex& k_;
+    const Incidence& inc_;
+    LatticePoint lo_, hi_;
+    std::vector<std::uint8_t> vertex_planes_, face_plane_;
+    std::vector<std::uint32_t> face_dual_, edge_dual_, vertex_dual_;
+    Faces faces_;
+};
+
+}  // namespace
+
+ClippedDual clipped_dual(const CellComplex& k, const Incidence& inc, const LatticePoint& lo, const LatticePoint& hi) {
+    return Builder(k, inc, lo, hi).run();
+}
+
+ClippedDual clipped_dual(const CellComplex& k, const Incidence& inc) {
+    LatticePoint lo{0, 0, 0}, hi{0, 0, 0};
+    if (k.n_vertices() > 0) lo = hi = k.positions().front();
+    for (const LatticePoint& p : k.positions())
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], p[a]);
+            hi[a] = std::max(hi[a], p[a]);
+        }
+    return clipped_dual(k, inc, lo, hi);
+}
+
+ClippedDual clipped_dual(const CellComplex& k) { return clipped_dual(k, Incidence(k)); }
+
+std::map<int, std::size_t> clipped_dual_edge_valences(const ClippedDual& d) {
+    // The 12 edges of a VTK hexahedron.
+    static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                          {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    std::vector<std::uint64_t> keys;
+    keys.reserve(12 * d.hexes.size());
+    for (const auto& h : d.hexes)
+        for (const auto& [i, j] : kEdges) {
+            std::uint32_t a = h[static_cast<std::size_t>(i)], b = h[static_cast<std::size_t>(j)];
+            if (d.kind[a] != DualVertexKind::Cell && d.kind[b] != DualVertexKind::Cell) continue;
+            if (a > b) std::swap(a, b);
+            keys.push_back(std::uint64_t{a} << 32 | b);
+        }
+    std::sort(keys.begin(), keys.end());
+    std::map<int, std::size_t> h;
+    for (std::size_t i = 0; i < keys.size();) {
+        std::size_t j = i;
+        while (j < keys.size() && keys[j] == keys[i]) ++j;
+        ++h[static_cast<int>(j - i)];
+        i = j;
+    }
+    return h;
+}
+
+}  // namespace dualhex
