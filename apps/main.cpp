@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     register_verify(app);
     register_element(app);
     register_table(app);
+    register_certify(app);
 
     try {
         app.parse(argc, argv);  // subcommand callbacks run in here

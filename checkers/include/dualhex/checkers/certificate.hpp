@@ -1,0 +1,111 @@
+#pragma once
+// Certificates (proofs/README.md): the producer side. A certificate lists a complex
+// explicitly (vertices with integer coordinates, faces as vertex loops, cells as signed
+// face lists, the interior vertices) and its claims; proofs/checker re-checks it without
+// any dualhex code. Everything claimed here (counts, histograms, the interior set) is
+// computed from the complex by dualhex's topology code; whether it is TRUE is for the
+// independent checker to decide.
+//
+// Format version 1:
+//   dualhex-certificate 1
+//   name NAME
+//   kind element|configuration|installation|histogram
+//   domain box X0 Y0 Z0 X1 Y1 Z1 | domain torus P | domain none
+//   vertices N      then N lines "x y z"             (vertex ids 0..N-1)
+//   faces N         then N lines "v0 v1 v2 ..."      (face ids 0..N-1)
+//   cells N         then N lines "+f -g ..."         (+f: face f's loop as written is
+//                                                     counter-clockwise seen from outside)
+//   interior all | interior K  then K vertex ids (any line breaks)
+//   covers L1 L2 ...   (optional) the labels this certificate stands for
+//   claim subdivision | valences | all-hex-dual | counts V E F C |
+//         face-sizes K:N ... | dual-valences K:N ... | interior-vertices N
+//   end
+// A file may hold several certificates; a manifest lists the files:
+//   dualhex-manifest 1
+//   total N
+//   covers N           (optional) the certificates' covers are exactly 0..N-1, once each
+//   file NAME COUNT KIND fnv1a64 HEX16
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dualhex/topology/cell_complex.hpp"
+
+namespace dualhex {
+
+class ElementLibrary;
+class TransitionRule;
+
+inline constexpr int kCertificateFormatVersion = 1;
+
+enum class CertificateKind { Element, Configuration, Installation, Histogram };
+[[nodiscard]] const char* to_string(CertificateKind kind);
+
+struct CertificateDomain {
+    enum class Type { Box, Torus, None } type = Type::None;
+    LatticePoint lo, hi;     ///< Box: the box [lo, hi]
+    std::int64_t period = 0; ///< Torus: vertex coordinates are residues modulo period (all axes)
+
+    [[nodiscard]] static CertificateDomain box(const LatticePoint& lo, const LatticePoint& hi) {
+        return {Type::Box, lo, hi, 0};
+    }
+    [[nodiscard]] static CertificateDomain torus(std::int64_t period) { return {Type::Torus, {}, {}, period}; }
+};
+
+struct CertificateSpec {
+    std::string name;  ///< one word, unique within a manifest
+    CertificateKind kind = CertificateKind::Histogram;
+    CertificateDomain domain;
+    /// The claims beyond counts / histograms / interior count (always written). The kind
+    /// fixes the minimum: element = subdivision; configuration and installation =
+    /// subdivision + valences + all-hex-dual (set automatically).
+    bool subdivision = false, valences = false, all_hex_dual = false;
+    std::vector<std::string> comments;  ///< '#' lines after the header
+    /// Labels this certificate stands for (`covers` line; e.g. the configuration masks whose
+    /// tori are this complex up to translation). Empty: no line.
+    std::vector<std::int64_t> covers;
+};
+
+/// Writes one certificate for `complex` (ids as in the complex: vertex k, face k, cell k).
+void write_certificate(std::ostream& out, const CellComplex& complex, const CertificateSpec& spec);
+[[nodiscard]] std::string certificate_to_string(const CellComplex& complex, const CertificateSpec& spec);
+
+/// FNV-1a 64 over the bytes (the manifest's hash; the checker implements it too).
+[[nodiscard]] std::uint64_t fnv1a64(std::string_view bytes);
+[[nodiscard]] std::string fnv1a64_hex(std::string_view bytes);  ///< 16 lower-case hex digits
+
+struct ManifestEntry {
+    std::string file;  ///< relative to the manifest's directory
+    std::size_t certificates = 0;
+    CertificateKind kind = CertificateKind::Histogram;
+    std::string hash;  ///< fnv1a64_hex of the file's bytes
+};
+/// covers < 0: no `covers` line.
+[[nodiscard]] std::string manifest_to_string(const std::vector<ManifestEntry>& entries, std::int64_t covers = -1);
+
+/// Writes `text` to dir/file and returns its manifest entry.
+ManifestEntry write_certificate_file(const std::filesystem::path& dir, const std::string& file, const std::string& text,
+                                     std::size_t certificates, CertificateKind kind);
+
+/// The certificates of a rule and an element library (what `dualhex certify` writes):
+///   elements.cert                   one element certificate per library element
+///   configurations-AAA-BBB.cert     periodic tori, 12 per file (AAA..BBB: the masks named)
+///   manifest                        total and per-file counts, kinds and hashes, covers 256
+/// Translating the torus by one octant cube along the axes in t (t = 1..7) turns the torus
+/// of mask m into the torus of mask m' (bit b of m' = bit b^t of m): the 256 tori are 46
+/// complexes up to translation. One certificate is written per translation class (the
+/// smallest mask; `covers` lists the class), after checking here, for every other mask,
+/// that its torus as built IS the translate (same cells, same oriented faces, same
+/// positions); std::runtime_error if not (then the rule is not translation invariant).
+/// Creates `dir` if needed; overwrites those files. Throws what the builders throw.
+struct CertifyResult {
+    std::vector<ManifestEntry> files;
+    std::size_t certificates = 0, bytes = 0;
+    std::size_t configurations_covered = 0;  ///< 256
+};
+CertifyResult certify_library(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir);
+
+}  // namespace dualhex
