@@ -41,6 +41,7 @@ void register_grid(CLI::App& app);
 void register_verify(CLI::App& app);
 void register_element(CLI::App& app);
 void register_table(CLI::App& app);
+void register_install(CLI::App& app);
 void register_certify(CLI::App& app);
 
 // --- shared helpers (commands.cpp) ---

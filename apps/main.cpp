@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     register_verify(app);
     register_element(app);
     register_table(app);
+    register_install(app);
     register_certify(app);
 
     try {

@@ -1,0 +1,180 @@
+// dualhex install GRID.leaves -o PREFIX: installs the strongly balanced elements into a
+// paired, strongly balanced grid (StrongRule, default element library), verifies the
+// result, builds the clipped dual (one hex per primal vertex, boundary kept) and writes
+// PREFIX.poly.vtk (VTK_POLYHEDRON) and PREFIX.hex.vtk (VTK_HEXAHEDRON).
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+
+#include "dualhex/checkers/install.hpp"
+#include "dualhex/checkers/library.hpp"
+#include "dualhex/geometry/complex_output.hpp"
+#include "dualhex/geometry/hex_output.hpp"
+#include "dualhex/grid/leaf_file.hpp"
+#include "dualhex/schemes/signature_rule.hpp"
+#include "dualhex/topology/clipped_dual.hpp"
+#include "dualhex/topology/histograms.hpp"
+#include "dualhex/topology/incidence.hpp"
+
+namespace dualhex::app {
+namespace {
+
+struct InstallOptionsCli {
+    std::string input, prefix, outside = "coarse";
+    bool json = false, force = false;
+};
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// A cell is a plain hexahedron iff it has 6 faces, all quadrilaterals.
+std::size_t non_hex_cells(const CellComplex& k) {
+    std::size_t n = 0;
+    for (std::size_t c = 0; c < k.n_cells(); ++c) {
+        const auto hfs = k.cell_halffaces(CellHandle(c));
+        bool hex = hfs.size() == 6;
+        for (HalfFaceHandle h : hfs) hex = hex && k.face_vertices(h.face()).size() == 4;
+        n += hex ? 0 : 1;
+    }
+    return n;
+}
+
+template <class Map>
+nlohmann::json histogram_json(const Map& h) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [k, v] : h) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, std::string>) j[k] = v;
+        else j[std::to_string(k)] = v;
+    }
+    return j;
+}
+
+template <class Map>
+std::string histogram_text(const Map& h) {
+    std::string s;
+    for (const auto& [k, v] : h) {
+        if (!s.empty()) s += ", ";
+        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, std::string>) s += k;
+        else s += std::to_string(k);
+        s += ": " + std::to_string(v);
+    }
+    return s.empty() ? "-" : s;
+}
+
+void run_install(const InstallOptionsCli& opt) {
+    const std::string poly_path = opt.prefix + ".poly.vtk", hex_path = opt.prefix + ".hex.vtk";
+    check_output(poly_path, opt.force);  // before any work
+    check_output(hex_path, opt.force);
+    const OutsideRoot outside = opt.outside == "mirror" ? OutsideRoot::Mirror : OutsideRoot::Coarse;
+
+    auto t0 = Clock::now();
+    const LeafGrid grid = read_leaf_file(opt.input);  // InputError -> exit 3
+    const double t_read = ms_since(t0);
+
+    const auto library = load_default_element_library();
+    t0 = Clock::now();
+    InstallResult installed;
+    try {
+        installed = install(grid, StrongRule(), *library, {.outside_root = outside, .balance = Balance::Strong});
+    } catch (const InstallError& e) {  // not paired / not strongly balanced: bad input
+        std::cerr << "error: " << opt.input << ": " << e.what() << '\n';
+        throw Exit{kInputError};
+    }
+    const double t_install = ms_since(t0);
+    const CellComplex& k = installed.complex;
+
+    t0 = Clock::now();
+    const std::int64_t extent = installed.unit << installed.max_level;
+    const ClippedDual dual = [&] {
+        const Incidence inc(k);
+        return clipped_dual(k, inc, {0, 0, 0}, {extent, extent, extent});
+    }();
+    const double t_dual = ms_since(t0);
+
+    t0 = Clock::now();
+    const InstallVerification verification = verify_installation(installed);
+    const auto valences = clipped_dual_edge_valences(dual);
+    const double t_verify = ms_since(t0);
+    const bool ok = verification.ok() && dual.all_cubes();
+
+    t0 = Clock::now();
+    const double scale = 1.0 / static_cast<double>(extent);
+    geometry::write_complex_vtk(poly_path, k, geometry::LatticeEmbedding{Eigen::Vector3d::Zero(), scale}, true);
+    {
+        geometry::HexMesh mesh;
+        mesh.points.reserve(dual.points.size());
+        for (const RationalPoint& p : dual.points)
+            mesh.points.emplace_back(p.coordinate(0, extent), p.coordinate(1, extent), p.coordinate(2, extent));
+        mesh.hexes.reserve(dual.hexes.size());
+        for (const auto& h : dual.hexes) {
+            std::array<int, 8> q{};
+            for (std::size_t i = 0; i < 8; ++i) q[i] = static_cast<int>(h[i]);
+            mesh.hexes.push_back(q);
+        }
+        geometry::write_vtk_legacy(hex_path, mesh, true);
+    }
+    const double t_write = ms_since(t0);
+
+    const std::size_t non_hex = non_hex_cells(k);
+    const auto elements = installed.elements_used();
+    const auto face_sizes = face_size_histogram(k);
+    if (opt.json) {
+        nlohmann::json errors = nlohmann::json::array();
+        for (std::size_t i = 0; i < dual.errors.size() && i < 20; ++i) errors.push_back(dual.errors[i].message);
+        print_json({{"input", opt.input},
+                    {"outside_root", opt.outside},
+                    {"leaves", grid.size()},
+                    {"cells", k.n_cells()},
+                    {"vertices", k.n_vertices()},
+                    {"non_hex_cells", non_hex},
+                    {"hexes", dual.hexes.size()},
+                    {"dual_points", dual.points.size()},
+                    {"non_cube_dual_cells", dual.errors.size()},
+                    {"non_cube_examples", errors},
+                    {"elements", histogram_json(elements)},
+                    {"face_sizes", histogram_json(face_sizes)},
+                    {"dual_edge_valences", histogram_json(valences)},
+                    {"verification", verification.summary()},
+                    {"ok", ok},
+                    {"outputs", {poly_path, hex_path}},
+                    {"ms", {{"read", t_read}, {"install", t_install}, {"dual", t_dual}, {"verify", t_verify}, {"write", t_write}}}});
+    } else {
+        std::printf("%s: %zu leaves, levels %d..%d\n", opt.input.c_str(), grid.size(), grid.min_level(), grid.max_level());
+        std::printf("installed (strong rule, outside root %s): %zu cells, %zu not hexahedra, %zu vertices\n",
+                    opt.outside.c_str(), k.n_cells(), non_hex, k.n_vertices());
+        std::printf("elements (leaves):            %s\n", histogram_text(elements).c_str());
+        std::printf("face sizes:                   %s\n", histogram_text(face_sizes).c_str());
+        std::printf("clipped dual:                 %zu hexes over %zu points, %zu vertices without a cube\n",
+                    dual.hexes.size(), dual.points.size(), dual.errors.size());
+        for (std::size_t i = 0; i < dual.errors.size() && i < 10; ++i) std::printf("  %s\n", dual.errors[i].message.c_str());
+        std::printf("interior dual edge valences:  %s\n", histogram_text(valences).c_str());
+        std::printf("verification:                 %s\n", verification.summary().c_str());
+        std::printf("wrote %s, %s\n", poly_path.c_str(), hex_path.c_str());
+        std::printf("time (ms): read %.1f, install %.1f, dual %.1f, verify %.1f, write %.1f\n", t_read, t_install, t_dual,
+                    t_verify, t_write);
+        std::printf("%s\n", ok ? "OK" : "FAILED");
+    }
+    if (!ok) throw Exit{kCheckFailed};
+}
+
+}  // namespace
+
+void register_install(CLI::App& app) {
+    auto opt = std::make_shared<InstallOptionsCli>();
+    CLI::App* sub = app.add_subcommand(
+        "install",
+        "Install the strongly balanced elements into a paired, strongly balanced grid, verify, and write the "
+        "polyhedral complex (PREFIX.poly.vtk) and its clipped dual hex mesh (PREFIX.hex.vtk)");
+    sub->add_option("grid", opt->input, "Leaf file (paired, strongly balanced)")->required();
+    sub->add_option("-o,--output", opt->prefix, "Output prefix: writes PREFIX.poly.vtk and PREFIX.hex.vtk")->required();
+    sub->add_flag("--force", opt->force, "Overwrite the output files if they exist");
+    sub->add_option("--outside-root", opt->outside, "Octant cubes outside the root: coarse (default) or mirror")
+        ->check(CLI::IsMember({"coarse", "mirror"}));
+    add_json_flag(*sub, opt->json);
+    sub->callback([opt] { run_install(*opt); });
+}
+
+}  // namespace dualhex::app
