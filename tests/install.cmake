@@ -1,2 +1,7 @@
 # tests for installation into grids: the clipped dual, `dualhex install`, random-grid properties
 dualhex_add_test(test_install_clipped_dual SOURCES test_install_clipped_dual.cpp DEPS dualhex::checkers)
+
+# `dualhex install` as a process
+dualhex_add_test(test_install_cli SOURCES test_install_cli.cpp DEPS nlohmann_json::nlohmann_json)
+target_compile_definitions(test_install_cli PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
+add_dependencies(test_install_cli dualhex)
