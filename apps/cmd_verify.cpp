@@ -49,7 +49,8 @@ void run_verify(const VerifyOptions& opt) {
     const auto t_all = std::chrono::steady_clock::now();
     nlohmann::json checks = nlohmann::json::array();
     int passed = 0, failed = 0, skipped = 0;
-    nlohmann::json strong = nlohmann::json::object();  // the summary block
+    // Summary blocks "strong" and "weak" from the scheme checks' details.
+    nlohmann::json blocks = {{"strong", nlohmann::json::object()}, {"weak", nlohmann::json::object()}};
     for (const auto& c : registry.checks()) {
         if (!selected(c.name, opt.only)) continue;
         const auto t0 = std::chrono::steady_clock::now();
@@ -61,14 +62,16 @@ void run_verify(const VerifyOptions& opt) {
             out.summary = std::string("exception: ") + e.what();
         }
         const double dt = seconds_since(t0);
-        if (c.name == "schemes.strong-exhaustive" && out.details.is_object()) {
-            for (const char* key : {"configurations", "passed", "classes", "max_dual_edge_valence"})
-                if (out.details.contains(key)) strong[key] = out.details[key];
-        }
-        if (c.name == "schemes.strong-elements" && out.details.is_object()) {
-            nlohmann::json elements = nlohmann::json::object();
-            for (const auto& [name, e] : out.details.items()) elements[name] = e["computed"];
-            strong["elements"] = elements;
+        for (const char* block : {"strong", "weak"}) {
+            if (!out.details.is_object()) break;
+            if (c.name == std::string("schemes.") + block + "-exhaustive")
+                for (const char* key : {"configurations", "passed", "classes", "max_dual_edge_valence"})
+                    if (out.details.contains(key)) blocks[block][key] = out.details[key];
+            if (c.name == std::string("schemes.") + block + "-elements") {
+                nlohmann::json elements = nlohmann::json::object();
+                for (const auto& [name, e] : out.details.items()) elements[name] = e["computed"];
+                blocks[block]["elements"] = elements;
+            }
         }
         switch (out.status) {
             case CheckStatus::kPass: ++passed; break;
@@ -96,7 +99,8 @@ void run_verify(const VerifyOptions& opt) {
                     {"failed", failed},
                     {"skipped", skipped},
                     {"seconds", total},
-                    {"strong", strong},
+                    {"strong", blocks["strong"]},
+                    {"weak", blocks["weak"]},
                     {"checks", checks}});
     } else {
         std::printf("%s: %d passed, %d failed, %d skipped in %.3f s\n", ok ? "OK" : "FAILED", passed, failed, skipped,

@@ -1,4 +1,5 @@
 #include <array>
+#include <functional>
 #include <span>
 #include <sstream>
 #include <stdexcept>
@@ -190,6 +191,82 @@ ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& 
         return ((mask >> b) & 1) != 0;
     };
     return assemble(mask, octants, fine, [](const LatticePoint& p) { return p; }, rule, library);
+}
+
+ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
+                                           const TransitionRule& rule, const ElementLibrary& library) {
+    detail::TemplateCache cache(library);
+    const std::int64_t U = cache.unit();
+    const std::int64_t octant = 4 * U;  // an octant cube: 2 level-0 leaves of 2U
+    const std::int64_t period = n_octants * octant;
+    const auto wrap = [period](const LatticePoint& p) {
+        return LatticePoint{floor_mod(p.x, period), floor_mod(p.y, period), floor_mod(p.z, period)};
+    };
+    const auto level_at = [&](const LatticePoint& p) {
+        return level(static_cast<int>(floor_mod(p.x, period) / octant), static_cast<int>(floor_mod(p.y, period) / octant),
+                     static_cast<int>(floor_mod(p.z, period) / octant));
+    };
+    ConfigurationComplex out;
+    out.unit = U;
+    ComplexBuilder builder;
+    std::vector<VertexHandle> vs, loop;
+    std::vector<HalfFaceHandle> hfs;
+    for (int ox = 0; ox < n_octants; ++ox)
+        for (int oy = 0; oy < n_octants; ++oy)
+            for (int oz = 0; oz < n_octants; ++oz) {
+                const int lv = level(ox, oy, oz);
+                if (lv < 0 || lv > 2) throw std::invalid_argument("build_periodic_levels: level must be 0, 1 or 2");
+                const LatticePoint lo{ox * octant, oy * octant, oz * octant};
+                const std::int64_t size = (2 * U) >> lv;  // leaf size at this level
+                const std::int64_t n = octant / size;
+                for (std::int64_t c = 0; c < n * n * n; ++c) {
+                    const LatticePoint at = lo + LatticePoint{c % n, (c / n) % n, c / (n * n)} * size;
+                    if (lv == 2) {
+                        detail::emit(builder, cache.hex(size), at, 1, wrap, vs, loop, hfs);
+                        ++out.fine_hexes;
+                        continue;
+                    }
+                    PlacedLeaf leaf;
+                    leaf.leaf = at;
+                    LeafContext& ctx = leaf.context;
+                    for (int a = 0; a < 3; ++a) {
+                        const bool even = floor_mod(at[a], 2 * size) == 0;
+                        ctx.application_point[a] = even ? at[a] : at[a] + size;
+                        ctx.direction[static_cast<std::size_t>(a)] = even ? 1 : -1;
+                    }
+                    for (int i = -2; i <= 1; ++i)
+                        for (int j = -2; j <= 1; ++j)
+                            for (int k = -2; k <= 1; ++k) {
+                                const int local[3] = {i, j, k};
+                                LatticePoint w;
+                                for (int a = 0; a < 3; ++a)
+                                    w[a] = ctx.application_point[a] + (ctx.direction[static_cast<std::size_t>(a)] > 0
+                                                                           ? 2 * size * local[a]
+                                                                           : -2 * size * (local[a] + 1));
+                                const int other = level_at(w);
+                                if (other > lv) ctx.set_fine(i, j, k);
+                                if (other > lv + 1) ctx.set_two_finer(i, j, k);
+                            }
+                    leaf.placement = rule.place(ctx);
+                    if (leaf.placement) {
+                        detail::check_placement_symmetry(*leaf.placement);
+                        const int e = cache.element_index(leaf.placement->element);
+                        const detail::ElementTemplate& t = cache.placed(e, world_symmetry(ctx, *leaf.placement));
+                        detail::emit(builder, t, ctx.application_point, size / U, wrap, vs, loop, hfs);
+                    } else {
+                        detail::emit(builder, cache.hex(size), at, 1, wrap, vs, loop, hfs);
+                    }
+                    out.coarse_leaves.push_back(std::move(leaf));
+                }
+            }
+    out.complex = std::move(builder).build();
+    return out;
+}
+
+ConfigurationReport check_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
+                                          const TransitionRule& rule, const ElementLibrary& library) {
+    return check(0, [&] { return build_periodic_levels(level, n_octants, rule, library); },
+                 [](const LatticePoint&) { return true; }, [](const CellComplex&, std::span<const VertexHandle>) { return false; });
 }
 
 ConfigurationReport check_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {

@@ -8,6 +8,8 @@
 // the complex is closed and every vertex is interior. Leaf contexts wrap around (octant
 // cube indices mod 2). Every 2x2x2 window of the torus is again one of the 256 masks
 // (all in the mask's class: the 8 application points see its reflections).
+#include <functional>
+
 #include "dualhex/checkers/configuration_report.hpp"
 #include "dualhex/schemes/element_library.hpp"
 
@@ -22,5 +24,15 @@ namespace dualhex {
 /// throws for rule/library problems: they come back as built = false with the message.
 [[nodiscard]] ConfigurationReport check_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
                                                                const ElementLibrary& library);
+
+/// A periodic grid of n_octants^3 octant cubes, each at level(ox, oy, oz) in {0, 1, 2}
+/// (0 coarsest: 2x2x2 leaves; 1: 4x4x4; 2: 8x8x8, plain hexes). Leaves of levels 0 and 1
+/// get the rule's placement with contexts that include LeafContext::two_finer, so a weak
+/// rule sees the two-level jumps. The caller keeps face-adjacent octant cubes within one
+/// level of each other (weak balance). Lattice: a level-1 leaf is U, level 0 is 2U.
+[[nodiscard]] ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
+                                                         const TransitionRule& rule, const ElementLibrary& library);
+[[nodiscard]] ConfigurationReport check_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
+                                                        const TransitionRule& rule, const ElementLibrary& library);
 
 }  // namespace dualhex

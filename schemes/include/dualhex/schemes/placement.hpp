@@ -38,6 +38,10 @@ struct LeafContext {
     std::array<int, 3> direction{1, 1, 1};  ///< d: the leaf is P + [0,d]
     /// Bit neighbourhood_bit(i,j,k) set iff that local octant cube is fine.
     std::uint64_t neighbourhood = 0;
+    /// Weakly balanced grids: bit set iff that octant cube holds leaves at least TWO levels
+    /// finer than the leaf (always a subset of `neighbourhood`). Zero in strongly balanced
+    /// grids.
+    std::uint64_t finer2 = 0;
 
     [[nodiscard]] static constexpr int neighbourhood_bit(int i, int j, int k) {
         return (i + 2) + 4 * (j + 2) + 16 * (k + 2);
@@ -45,6 +49,10 @@ struct LeafContext {
     /// i,j,k in {-2,-1,0,1} (local frame); throws std::out_of_range otherwise.
     [[nodiscard]] bool fine(int i, int j, int k) const;
     void set_fine(int i, int j, int k, bool value = true);
+    /// i,j,k as for fine(): does that octant cube hold leaves two or more levels finer?
+    [[nodiscard]] bool two_finer(int i, int j, int k) const;
+    /// Marks that octant cube as two or more levels finer (and fine).
+    void set_two_finer(int i, int j, int k, bool value = true);
 
     /// The 8 octants around P as a grid-convention configuration mask in the LOCAL frame:
     /// bit b = octant (b&1 ? +x : -x, b&2 ? +y : -y, b&4 ? +z : -z) is fine.

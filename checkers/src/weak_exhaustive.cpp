@@ -1,0 +1,72 @@
+#include "dualhex/checkers/weak_exhaustive.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <set>
+
+#include "dualhex/checkers/periodic_configuration.hpp"
+#include "dualhex/grid/configurations.hpp"
+
+namespace dualhex {
+
+std::vector<LevelAssignment> weak_configurations() {
+    std::vector<LevelAssignment> out;
+    for (int code = 0; code < 6561; ++code) {  // 3^8
+        LevelAssignment lv{};
+        int c = code;
+        for (auto& l : lv) {
+            l = static_cast<std::uint8_t>(c % 3);
+            c /= 3;
+        }
+        if (*std::min_element(lv.begin(), lv.end()) != 0) continue;
+        bool balanced = true;
+        for (int b = 0; b < 8 && balanced; ++b)
+            for (int a = 0; a < 3; ++a)
+                if (std::abs(int(lv[b]) - int(lv[b ^ (1 << a)])) > 1) balanced = false;
+        if (balanced) out.push_back(lv);
+    }
+    return out;
+}
+
+LevelAssignment canonical(const LevelAssignment& levels) {
+    // As two masks (level >= 1, level >= 2), each moved by grid's action on octant masks.
+    ConfigMask at_least[2] = {0, 0};
+    for (int b = 0; b < 8; ++b)
+        for (int t = 0; t < 2; ++t)
+            if (levels[b] > t) at_least[t] = static_cast<ConfigMask>(at_least[t] | (1u << b));
+    LevelAssignment best{3, 3, 3, 3, 3, 3, 3, 3};
+    for (const CubeSymmetry& g : group_elements(SymmetryGroup::Full)) {
+        const ConfigMask m1 = apply(g, at_least[0]), m2 = apply(g, at_least[1]);
+        LevelAssignment image{};
+        for (int b = 0; b < 8; ++b) image[b] = static_cast<std::uint8_t>(((m1 >> b) & 1) + ((m2 >> b) & 1));
+        best = std::min(best, image);
+    }
+    return best;
+}
+
+WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const ElementLibrary& library) {
+    const auto t0 = std::chrono::steady_clock::now();
+    WeakExhaustiveResult r;
+    std::set<LevelAssignment> classes, three;
+    for (const LevelAssignment& lv : weak_configurations()) {
+        ++r.configurations;
+        const LevelAssignment key = canonical(lv);
+        classes.insert(key);
+        if (*std::max_element(lv.begin(), lv.end()) == 2) three.insert(key);
+        const auto level = [&lv](int x, int y, int z) { return int(lv[(x & 1) | ((y & 1) << 1) | ((z & 1) << 2)]); };
+        const ConfigurationReport report = check_periodic_levels(level, 2, rule, library);
+        if (report.ok())
+            ++r.passed;
+        else
+            r.failures.push_back(report.summary());
+        for (const auto& [name, n] : report.elements) r.elements[name] += n;
+        if (!report.dual_edge_valences.empty())
+            r.max_dual_edge_valence = std::max(r.max_dual_edge_valence, report.dual_edge_valences.rbegin()->first);
+    }
+    r.classes = static_cast<int>(classes.size());
+    r.three_level_classes = static_cast<int>(three.size());
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+}
+
+}  // namespace dualhex
