@@ -5,3 +5,6 @@ dualhex_add_test(test_install_clipped_dual SOURCES test_install_clipped_dual.cpp
 dualhex_add_test(test_install_cli SOURCES test_install_cli.cpp DEPS nlohmann_json::nlohmann_json)
 target_compile_definitions(test_install_cli PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
 add_dependencies(test_install_cli dualhex)
+
+# random grids through the whole pipeline (RapidCheck)
+dualhex_add_test(test_install_properties SOURCES test_install_properties.cpp DEPS dualhex::checkers)
