@@ -1,13 +1,18 @@
 // install_bench: times element installation (checkers/install.hpp) and the checks after it.
 //
-//   install_bench [--elements DIR] [base levels ...]      (default: 4 5)
+//   install_bench [--elements DIR] [--grid FILE ...] [--verify] [base levels ...]
+//                                                  (default: flat 4 5, then the sphere grids)
 //
 // Flat grids: root refined to level `base`, the half y < 1/2 to base + 1 (paired, strongly
 // balanced, flat transitions only), installed with FlatOnlyRule (outside-root cubes
-// mirrored, so the side walls stay flat). Then the shared sphere grids: they need the full
-// rule, so only the grid checks and the leaf contexts are timed and the flat-only rule's
-// refusal is shown. Times are wall seconds; memory is the peak resident set size.
+// mirrored, so the side walls stay flat). Then the shared strongly balanced sphere grids
+// (or the --grid files) with the StrongRule: install, Incidence + clipped dual, per leaf.
+// Times are wall seconds and process CPU seconds; memory is the peak resident set size.
+// A machine-readable line per grid: TABLE name leaves cells hexes install_cpu dual_cpu
+// sum_cpu us_per_leaf peak_MB (bench/run_install.sh runs one grid per process).
 #include <sys/resource.h>
+
+#include <time.h>
 
 #include <chrono>
 #include <cstdio>
@@ -20,6 +25,8 @@
 #include "dualhex/checkers/install.hpp"
 #include "dualhex/checkers/library.hpp"
 #include "dualhex/grid/leaf_file.hpp"
+#include "dualhex/schemes/signature_rule.hpp"
+#include "dualhex/topology/clipped_dual.hpp"
 #include "dualhex/topology/dual.hpp"
 #include "dualhex/topology/validation.hpp"
 
@@ -28,6 +35,18 @@ using namespace dualhex;
 namespace {
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+double cpu() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+std::string fmt(double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3f", x);
+    return b;
+}
 
 double peak_mb() {
     rusage u{};
@@ -60,15 +79,21 @@ void row(const char* what, double seconds, const std::string& extra = {}) {
 int main(int argc, char** argv) {
     std::filesystem::path elements;
     std::vector<int> bases;
+    std::vector<std::filesystem::path> grids;
+    bool verify = false;
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
         if (arg == "--elements" && a + 1 < argc) {
             elements = argv[++a];
+        } else if (arg == "--grid" && a + 1 < argc) {
+            grids.emplace_back(argv[++a]);
+        } else if (arg == "--verify") {
+            verify = true;
         } else {
             bases.push_back(std::atoi(arg.c_str()));
         }
     }
-    if (bases.empty()) bases = {4, 5};
+    if (bases.empty() && grids.empty()) bases = {4, 5};
     std::shared_ptr<const ElementLibrary> library;
     try {
         library = elements.empty() ? load_default_element_library() : load_element_library(elements);
@@ -114,28 +139,52 @@ int main(int argc, char** argv) {
         row("verify_installation", now() - t, v.summary());
     }
 
-    for (int d : {5, 6, 7}) {
-        const std::filesystem::path file =
-            std::filesystem::path(DUALHEX_SHARED_DATA) / "grids" / ("sphere_strong_d" + std::to_string(d) + ".leaves");
+    // Strong rule on real grids: the sphere grids (or files given with --grid), one row of
+    // phases each: install (incl. grid checks), Incidence + clipped dual, and the per-leaf
+    // cost. Wall and CPU seconds (the machine's cores are shared).
+    std::vector<std::filesystem::path> files = grids;
+    if (files.empty())
+        for (int d : {5, 6, 7})
+            files.push_back(std::filesystem::path(DUALHEX_SHARED_DATA) / "grids" / ("sphere_strong_d" + std::to_string(d) + ".leaves"));
+    const StrongRule strong;
+    for (const auto& file : files) {
         if (!std::filesystem::exists(file)) continue;
-        double t = now();
+        double t = now(), c = cpu();
         const LeafGrid grid = read_leaf_file(file);
-        std::printf("%s: %zu leaves\n", file.filename().c_str(), grid.size());
-        row("read", now() - t);
-        t = now();
-        const InstallCheck ok = check_installable(grid);
-        row("paired + strongly balanced", now() - t, ok.ok ? "ok" : ok.message);
-        t = now();
-        const std::vector<LeafContext> contexts = leaf_contexts(grid, OutsideRoot::Coarse);
-        const double t_ctx = now() - t;
-        std::map<std::string, std::size_t> patterns;
-        for (const LeafContext& c : contexts) ++patterns[c.local_pattern_name()];
-        row("leaf contexts", t_ctx, std::to_string(patterns.size()) + " distinct local patterns around P");
+        std::printf("%s: %zu leaves (strong rule)\n", file.filename().c_str(), grid.size());
+        row("read", now() - t, "cpu " + fmt(cpu() - c));
+        t = now(), c = cpu();
+        InstallResult r;
         try {
-            (void)install(grid, rule, *library);
-            std::printf("  install: unexpectedly accepted by the flat-only rule\n");
+            r = install(grid, strong, *library);
         } catch (const std::exception& e) {
-            std::printf("  install (flat-only rule): refused: %.160s\n", e.what());
+            std::printf("  install refused: %.160s\n", e.what());
+            continue;
+        }
+        const double w_install = now() - t, c_install = cpu() - c;
+        row("install (incl. grid checks)", w_install,
+            "cpu " + fmt(c_install) + "; " + std::to_string(r.complex.n_cells()) + " cells, " +
+                std::to_string(r.complex.n_vertices()) + " vertices");
+        t = now(), c = cpu();
+        const std::int64_t extent = r.unit << r.max_level;
+        const Incidence inc(r.complex);
+        const double w_inc = now() - t, c_inc = cpu() - c;
+        row("Incidence", w_inc, "cpu " + fmt(c_inc));
+        t = now(), c = cpu();
+        const ClippedDual dual = clipped_dual(r.complex, inc, {0, 0, 0}, {extent, extent, extent});
+        const double w_dual = now() - t + w_inc, c_dual = cpu() - c + c_inc;
+        row("clipped_dual", now() - t, "cpu " + fmt(cpu() - c) + "; " + std::to_string(dual.hexes.size()) + " hexes, " +
+                                           std::to_string(dual.errors.size()) + " non-cubes");
+        row("install + dual", w_install + w_dual,
+            "cpu " + fmt(c_install + c_dual) + "; " + fmt(1e6 * (c_install + c_dual) / static_cast<double>(grid.size())) +
+                " us/leaf (cpu)");
+        std::printf("TABLE %s %zu %zu %zu %.3f %.3f %.3f %.3f %.1f\n", file.filename().c_str(), grid.size(),
+                    r.complex.n_cells(), dual.hexes.size(), c_install, c_dual, c_install + c_dual,
+                    1e6 * (c_install + c_dual) / static_cast<double>(grid.size()), peak_mb());
+        if (verify) {
+            t = now();
+            const InstallVerification v = verify_installation(r);
+            row("verify_installation", now() - t, v.summary());
         }
     }
     return 0;
