@@ -565,7 +565,8 @@ int main(int argc, char** argv) {
         std::string text;
         if (!read_file(args[1], text)) { std::cout << "REJECTED: cannot read " << args[1] << '\n'; return 1; }
         std::set<std::string> kinds;
-        std::cout << args[1] << ": " << check_file(args[1], text, t, kinds) << " certificates\n";
+        const std::size_t n = check_file(args[1], text, t, kinds);
+        std::cout << args[1] << ": " << n << " certificates\n";
     } else {
         const std::filesystem::path manifest = args[0];
         std::string text;
@@ -606,7 +607,7 @@ int main(int argc, char** argv) {
     std::cout << "parsed: " << t.certificates << " certificates, " << with_commas(t.sum.vertices) << " vertices, " << with_commas(t.sum.edges)
               << " edges, " << with_commas(t.sum.faces) << " faces, " << with_commas(t.sum.cells) << " cells\n";
     if (t.rejected || problems || t.certificates == 0) {
-        std::cout << "NOT VERIFIED: " << t.rejected << " certificates rejected, " << problems << " manifest problems\n";
+        std::cout << "FAILED: " << t.rejected << " certificates rejected, " << problems << " manifest problems\n";
         return 1;
     }
     std::cout << "VERIFIED:";

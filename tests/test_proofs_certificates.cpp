@@ -1,0 +1,533 @@
+// proofs/: the shipped certificates are current, and the independent checker's verdict on
+// systematically mutated certificates equals the truth established with dualhex's own
+// checks (validate, check_element, histograms), which share no code with the checker.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dualhex/checkers/certificate.hpp"
+#include "dualhex/checkers/periodic_configuration.hpp"
+#include "dualhex/schemes/element_check.hpp"
+#include "dualhex/schemes/element_library.hpp"
+#include "dualhex/schemes/signature_rule.hpp"
+#include "dualhex/topology/histograms.hpp"
+#include "dualhex/topology/incidence.hpp"
+#include "dualhex/topology/validation.hpp"
+
+namespace dualhex {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kShipped = fs::path(DUALHEX_SOURCE_DIR) / "proofs" / "certificates";
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+fs::path temp_dir(const std::string& tag) {
+    const fs::path d = fs::temp_directory_path() / ("dualhex-proofs-" + tag + "-" + std::to_string(::getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+struct CheckerRun {
+    int code = -1;
+    std::string out;
+};
+CheckerRun run_checker(const std::string& args) {
+    CheckerRun r;
+    FILE* p = ::popen((std::string(DUALHEX_PROOF_CHECKER) + " " + args + " 2>&1").c_str(), "r");
+    char buf[4096];
+    while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
+    const int status = ::pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+// ------------------------------------------------------------------ freshness
+TEST(ProofsCertificates, ShippedCertificatesAreCurrent) {
+    // Regenerate from the library and rule as they are now; the manifest (hash of every
+    // certificate file) must be byte-identical to the shipped one. If this fails, the
+    // elements or the rule changed: run `dualhex certify --out proofs/certificates --force`.
+    const fs::path dir = temp_dir("fresh");
+    const CertifyResult result = certify_library(ElementLibrary::load_default(), StrongRule{}, dir);
+    EXPECT_EQ(result.configurations_covered, 256u);
+    EXPECT_EQ(read(dir / "manifest"), read(kShipped / "manifest"))
+        << "proofs/certificates is stale: regenerate with `dualhex certify --out proofs/certificates --force`";
+    for (const ManifestEntry& e : result.files) EXPECT_EQ(read(dir / e.file), read(kShipped / e.file)) << e.file;
+    const CheckerRun r = run_checker((dir / "manifest").string());
+    EXPECT_EQ(r.code, 0) << r.out;
+    fs::remove_all(dir);
+}
+
+// ------------------------------------------------------------------ mutations
+// A certificate as data (what the checker reads), with a serializer and an oracle.
+struct Cert {
+    std::vector<std::string> head;  // name/kind/domain lines (name is replaced)
+    std::vector<LatticePoint> pos;
+    std::vector<std::vector<int>> faces;
+    std::vector<std::vector<int>> cells;  // 2*f + side
+    bool interior_all = false;
+    std::vector<int> interior;
+    std::vector<std::string> claims;  // the text after "claim "
+    std::string domain;               // "box" / "torus"
+    std::int64_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, period = 0;
+};
+
+Cert parse(const std::string& text) {
+    Cert c;
+    std::istringstream in(text);
+    std::string line;
+    auto rows = [&](std::size_t n, auto&& f) {
+        for (std::size_t i = 0; i < n; ++i) {
+            std::getline(in, line);
+            f(line);
+        }
+    };
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream ls(line);
+        std::string key;
+        std::size_t n = 0;
+        ls >> key;
+        if (key == "name" || key == "kind") c.head.push_back(line);
+        if (key == "domain") {
+            c.head.push_back(line);
+            ls >> c.domain;
+            if (c.domain == "box") ls >> c.lo[0] >> c.lo[1] >> c.lo[2] >> c.hi[0] >> c.hi[1] >> c.hi[2];
+            else ls >> c.period;
+        }
+        if (key == "vertices") ls >> n, rows(n, [&](const std::string& l) {
+            std::istringstream s(l);
+            LatticePoint p;
+            s >> p.x >> p.y >> p.z;
+            c.pos.push_back(p);
+        });
+        if (key == "faces") ls >> n, rows(n, [&](const std::string& l) {
+            std::istringstream s(l);
+            std::vector<int> f;
+            for (int v; s >> v;) f.push_back(v);
+            c.faces.push_back(f);
+        });
+        if (key == "cells") ls >> n, rows(n, [&](const std::string& l) {
+            std::istringstream s(l);
+            std::vector<int> k;
+            for (std::string t; s >> t;) k.push_back(2 * std::stoi(t.substr(1)) + (t[0] == '-'));
+            c.cells.push_back(k);
+        });
+        if (key == "interior") {
+            std::string w;
+            ls >> w;
+            if (w == "all") c.interior_all = true;
+            else for (std::size_t i = 0, m = std::stoul(w); i < m; ++i) { int v; in >> v; c.interior.push_back(v); }
+        }
+        if (key == "claim") c.claims.push_back(line.substr(6));
+    }
+    return c;
+}
+
+std::string serialize(const Cert& c, const std::string& name) {
+    std::ostringstream o;
+    o << "dualhex-certificate 1\n";
+    for (const std::string& h : c.head) o << (h.rfind("name ", 0) == 0 ? "name " + name : h) << '\n';
+    o << "vertices " << c.pos.size() << '\n';
+    for (const auto& p : c.pos) o << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    o << "faces " << c.faces.size() << '\n';
+    for (const auto& f : c.faces) {
+        for (std::size_t i = 0; i < f.size(); ++i) o << (i ? " " : "") << f[i];
+        o << '\n';
+    }
+    o << "cells " << c.cells.size() << '\n';
+    for (const auto& k : c.cells) {
+        for (std::size_t i = 0; i < k.size(); ++i) o << (i ? " " : "") << (k[i] % 2 ? '-' : '+') << k[i] / 2;
+        o << '\n';
+    }
+    if (c.interior_all) o << "interior all\n";
+    else {
+        o << "interior " << c.interior.size() << '\n';
+        for (int v : c.interior) o << v << '\n';
+    }
+    for (const auto& cl : c.claims) o << "claim " << cl << '\n';
+    o << "end\n";
+    return o.str();
+}
+
+std::string hist(const std::map<int, std::size_t>& h) {
+    std::string s;
+    for (auto [k, n] : h) s += " " + std::to_string(k) + ":" + std::to_string(n);
+    return s;
+}
+
+// The truth, from dualhex's own code: every claim of the certificate holds.
+bool truth(const Cert& c) {
+    const std::size_t V = c.pos.size();
+    if (std::set<LatticePoint>(c.pos.begin(), c.pos.end()).size() != V) return false;
+    std::vector<std::uint32_t> fo{0}, co{0};
+    std::vector<VertexHandle> loops;
+    std::vector<HalfFaceHandle> hfs;
+    std::set<std::vector<int>> face_sets;
+    std::vector<char> used(V, 0);
+    for (const auto& f : c.faces) {
+        for (int v : f) {
+            if (v < 0 || static_cast<std::size_t>(v) >= V) return false;
+            loops.push_back(VertexHandle(v));
+            used[v] = 1;
+        }
+        fo.push_back(static_cast<std::uint32_t>(loops.size()));
+        std::vector<int> s = f;
+        std::sort(s.begin(), s.end());
+        if (!face_sets.insert(s).second) return false;  // two faces on the same vertices
+    }
+    if (std::count(used.begin(), used.end(), 0)) return false;  // a vertex on no face
+    for (const auto& k : c.cells) {
+        if (k.empty()) return false;
+        for (int h : k) {
+            if (h < 0 || static_cast<std::size_t>(h / 2) >= c.faces.size()) return false;
+            hfs.push_back(HalfFaceHandle(h));
+        }
+        co.push_back(static_cast<std::uint32_t>(hfs.size()));
+    }
+    CellComplex k;
+    try {
+        k = CellComplex(c.pos, fo, loops, co, hfs);
+    } catch (const std::exception&) {
+        return false;
+    }
+    std::set<std::string> claims;
+    for (const auto& cl : c.claims) claims.insert(cl.substr(0, cl.find(' ')));
+    ValidationOptions opt;
+    opt.check_interior = claims.count("valences") > 0;
+    if (!validate(k, opt).ok()) return false;
+    const Incidence inc(k);
+    std::vector<int> interior;
+    for (std::size_t v = 0; v < V; ++v)
+        if (!inc.is_boundary(VertexHandle(v))) interior.push_back(static_cast<int>(v));
+    if (c.interior_all ? interior.size() != V : interior != c.interior) {
+        std::vector<int> sorted = c.interior;
+        std::sort(sorted.begin(), sorted.end());
+        if (c.interior_all || sorted != interior) return false;
+    }
+    if (c.domain == "box") {
+        if (!check_element(k, ElementBox{{c.lo[0], c.lo[1], c.lo[2]}, c.hi[0] - c.lo[0]}).ok()) return false;
+    } else {  // torus: closed, positions reduced, cells of positive volume filling the torus
+        for (std::size_t f = 0; f < k.n_faces(); ++f)
+            if (inc.is_boundary(FaceHandle(f))) return false;
+        for (const auto& p : c.pos)
+            for (int a = 0; a < 3; ++a)
+                if (p[a] < 0 || p[a] >= c.period) return false;
+        std::int64_t total = 0;
+        for (std::size_t ci = 0; ci < k.n_cells(); ++ci) {
+            const LatticePoint r = k.position(k.face_vertices(k.cell_halffaces(CellHandle(ci))[0].face())[0]);
+            auto near = [&](LatticePoint p) {
+                for (int a = 0; a < 3; ++a) {
+                    std::int64_t d = ((p[a] - r[a]) % c.period + c.period) % c.period;
+                    p[a] = d > c.period / 2 ? d - c.period : d;
+                }
+                return p;
+            };
+            std::int64_t vol = 0;
+            for (HalfFaceHandle h : k.cell_halffaces(CellHandle(ci))) {
+                auto l = k.halfface_vertices(h);
+                const LatticePoint a = near(k.position(l[0]));
+                for (std::size_t j = 1; j + 1 < l.size(); ++j) {
+                    const LatticePoint b = near(k.position(l[j])), d = near(k.position(l[j + 1]));
+                    vol += a.x * (b.y * d.z - b.z * d.y) - a.y * (b.x * d.z - b.z * d.x) + a.z * (b.x * d.y - b.y * d.x);
+                }
+            }
+            if (vol <= 0) return false;
+            total += vol;
+        }
+        if (total != 6 * c.period * c.period * c.period) return false;
+    }
+    for (const auto& cl : c.claims) {
+        const std::string key = cl.substr(0, cl.find(' '));
+        if (key == "counts" && cl != "counts " + std::to_string(k.n_vertices()) + " " + std::to_string(k.n_edges()) + " " +
+                                          std::to_string(k.n_faces()) + " " + std::to_string(k.n_cells()))
+            return false;
+        if (key == "face-sizes" && cl != "face-sizes" + hist(face_size_histogram(k))) return false;
+        if (key == "dual-valences" && cl != "dual-valences" + hist(interior_dual_edge_valence_histogram(k, inc))) return false;
+        if (key == "interior-vertices" && cl != "interior-vertices " + std::to_string(interior.size())) return false;
+    }
+    return true;
+}
+
+// Generates every mutation of `c` (name, mutated certificate).
+std::vector<std::pair<std::string, Cert>> mutations(const Cert& c, std::size_t stride) {
+    std::vector<std::pair<std::string, Cert>> out;
+    auto add = [&](const std::string& what, Cert m) { out.emplace_back(what, std::move(m)); };
+    const int F = static_cast<int>(c.faces.size());
+    for (std::size_t k = 0; k < c.cells.size(); k += stride) {
+        for (std::size_t i = 0; i < c.cells[k].size(); ++i) {
+            Cert m = c;  // drop a face from a cell
+            m.cells[k].erase(m.cells[k].begin() + static_cast<long>(i));
+            add("drop face ref", m);
+            m = c;  // flip the orientation of a face in a cell
+            m.cells[k][i] ^= 1;
+            add("flip face in cell", m);
+        }
+        Cert m = c;
+        m.cells.push_back(c.cells[k]);
+        add("duplicate cell", m);
+    }
+    for (int f = 0; f < F; f += static_cast<int>(stride)) {
+        Cert m = c;  // delete the face (references removed, later ids shifted)
+        m.faces.erase(m.faces.begin() + f);
+        for (auto& k : m.cells) {
+            std::vector<int> kept;
+            for (int h : k)
+                if (h / 2 != f) kept.push_back(h / 2 > f ? h - 2 : h);
+            k = kept;
+        }
+        add("delete face", m);
+        m = c;  // rotate the loop: the same face (truth-keeping)
+        std::rotate(m.faces[f].begin(), m.faces[f].begin() + 1, m.faces[f].end());
+        add("rotate loop", m);
+        m = c;  // reverse the loop and every use of it: the same complex (truth-keeping)
+        std::reverse(m.faces[f].begin(), m.faces[f].end());
+        for (auto& k : m.cells)
+            for (int& h : k)
+                if (h / 2 == f) h ^= 1;
+        add("reverse loop and uses", m);
+        const std::size_t n = c.faces[f].size();
+        for (std::size_t i = 0; i < n; ++i) {
+            m = c;  // swap two neighbouring vertices of the loop
+            std::swap(m.faces[f][i], m.faces[f][(i + 1) % n]);
+            add("swap loop vertices", m);
+            m = c;  // glue wrongly: change a vertex id
+            m.faces[f][i] = (m.faces[f][i] + 1) % static_cast<int>(c.pos.size());
+            add("change vertex id", m);
+        }
+    }
+    if (c.interior_all) {
+        for (std::size_t v = 0; v < c.pos.size(); v += 7) {
+            Cert m = c;  // drop one vertex from the identification "all interior"
+            m.interior_all = false;
+            for (std::size_t w = 0; w < c.pos.size(); ++w)
+                if (w != v) m.interior.push_back(static_cast<int>(w));
+            add("remove interior vertex", m);
+        }
+    } else {
+        for (std::size_t i = 0; i < c.interior.size(); ++i) {
+            Cert m = c;
+            m.interior.erase(m.interior.begin() + static_cast<long>(i));
+            add("remove interior vertex", m);
+        }
+        for (std::size_t v = 0; v < c.pos.size(); ++v)
+            if (std::find(c.interior.begin(), c.interior.end(), static_cast<int>(v)) == c.interior.end()) {
+                Cert m = c;  // a boundary vertex claimed interior
+                m.interior.push_back(static_cast<int>(v));
+                add("add interior vertex", m);
+                break;
+            }
+    }
+    for (std::size_t i = 0; i < c.claims.size(); ++i) {  // wrong numbers in a claim
+        std::istringstream s(c.claims[i]);
+        std::vector<std::string> tok;
+        for (std::string t; s >> t;) tok.push_back(t);
+        for (std::size_t j = 1; j < tok.size(); ++j)
+            for (int delta : {-1, 1}) {
+                std::vector<std::string> t2 = tok;
+                const auto colon = t2[j].find(':');
+                const std::string pre = colon == std::string::npos ? "" : t2[j].substr(0, colon + 1);
+                const long value = std::stol(t2[j].substr(pre.size()));
+                if (value + delta <= 0) continue;
+                t2[j] = pre + std::to_string(value + delta);
+                Cert m = c;
+                m.claims[i].clear();
+                for (const auto& t : t2) m.claims[i] += (m.claims[i].empty() ? "" : " ") + t;
+                add("wrong claim " + tok[0], m);
+            }
+        if (tok[0] == "face-sizes" || tok[0] == "dual-valences") {
+            Cert m = c;
+            m.claims[i] += " 9:1";
+            add("extra histogram entry", m);
+        }
+    }
+    if (c.domain == "box")
+        for (std::size_t v = 0; v < c.pos.size(); ++v)
+            for (int a = 0; a < 3; ++a)
+                for (int d : {-1, 1}) {  // move a vertex: sometimes still true (truth decides)
+                    Cert m = c;
+                    m.pos[v][a] += d;
+                    add("move vertex", m);
+                }
+    return out;
+}
+
+struct Tally {
+    std::size_t tried = 0, rejected = 0, accepted = 0;
+    std::map<std::string, std::pair<std::size_t, std::size_t>> per_kind;  // tried, rejected
+};
+
+// Writes all mutations of the certificates into one file, runs the checker once, and
+// compares its per-certificate verdict with the truth.
+void check_mutations(const std::vector<Cert>& originals, const std::string& tag, Tally& tally, std::size_t stride) {
+    std::string text;
+    std::vector<std::pair<std::string, bool>> expected;  // what, truth
+    for (const Cert& c : originals) {
+        ASSERT_TRUE(truth(c)) << "the unmutated certificate must be true";
+        for (auto& [what, m] : mutations(c, stride)) {
+            expected.emplace_back(what, truth(m));
+            text += serialize(m, "m" + std::to_string(expected.size()));
+        }
+    }
+    const fs::path dir = temp_dir(tag);
+    write(dir / "mutants.cert", text);
+    const CheckerRun r = run_checker("--file " + (dir / "mutants.cert").string());
+    std::set<std::size_t> rejected;
+    std::istringstream lines(r.out);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("REJECTED", 0) != 0) continue;
+        auto at = line.find("certificate m");
+        std::size_t id = 0;
+        if (at != std::string::npos) id = std::stoul(line.substr(at + 13));
+        else if ((at = line.find("certificate #")) != std::string::npos) id = std::stoul(line.substr(at + 13));
+        ASSERT_GT(id, 0u) << line;
+        rejected.insert(id);
+    }
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const bool rej = rejected.count(i + 1) > 0;
+        EXPECT_EQ(rej, !expected[i].second) << tag << " mutation m" << i + 1 << " (" << expected[i].first
+                                            << "): checker " << (rej ? "rejected" : "accepted") << ", truth "
+                                            << (expected[i].second ? "true" : "false");
+        ++tally.tried;
+        (rej ? tally.rejected : tally.accepted)++;
+        auto& pk = tally.per_kind[expected[i].first];
+        ++pk.first;
+        pk.second += rej;
+    }
+    EXPECT_EQ(r.code, rejected.empty() ? 0 : 1);
+    fs::remove_all(dir);
+}
+
+std::vector<std::string> split_certificates(const std::string& text) {
+    std::vector<std::string> out;
+    std::size_t at = 0;
+    while ((at = text.find("dualhex-certificate 1\n", at)) != std::string::npos) {
+        const std::size_t end = text.find("\nend\n", at);
+        out.push_back(text.substr(at, end + 5 - at));
+        at = end;
+    }
+    return out;
+}
+
+TEST(ProofsCertificates, MutationsOfElementsAndConfigurations) {
+    Tally tally;
+    std::vector<Cert> elements;
+    for (const std::string& t : split_certificates(read(kShipped / "elements.cert"))) elements.push_back(parse(t));
+    ASSERT_GE(elements.size(), 8u);
+    check_mutations(elements, "elements", tally, 1);  // every face, cell, vertex
+    // two small tori: all coarse (mask 0: 64 hexes) and one fine octant (mask 1: F, C1, ...)
+    const ElementLibrary library = ElementLibrary::load_default();
+    std::vector<Cert> tori;
+    for (int mask : {0, 1}) {
+        CertificateSpec spec;
+        spec.name = "torus";
+        spec.kind = CertificateKind::Configuration;
+        const ConfigurationComplex cc = build_periodic_configuration(static_cast<std::uint8_t>(mask), StrongRule{}, library);
+        spec.domain = CertificateDomain::torus(4 * cc.unit);
+        tori.push_back(parse(certificate_to_string(cc.complex, spec)));
+    }
+    check_mutations(tori, "tori", tally, 6);  // every 6th face and cell
+    std::cout << "[ mutations ] tried " << tally.tried << ", rejected " << tally.rejected << ", accepted "
+              << tally.accepted << " (accepted only where the truth holds)\n";
+    for (const auto& [what, n] : tally.per_kind)
+        std::cout << "    " << what << ": " << n.first << " tried, " << n.second << " rejected\n";
+    EXPECT_GT(tally.rejected, 1000u);
+    EXPECT_GT(tally.per_kind["rotate loop"].first, 0u);
+    EXPECT_EQ(tally.per_kind["rotate loop"].second, 0u);
+    EXPECT_EQ(tally.per_kind["reverse loop and uses"].second, 0u);
+    EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
+}
+
+TEST(ProofsCertificates, TruncationsAndManifestTampering) {
+    // a small manifest: the shipped elements and two tori (masks 0 and 1) in a second file
+    const fs::path dir = temp_dir("manifest");
+    fs::copy(kShipped / "elements.cert", dir / "elements.cert");
+    const ElementLibrary library = ElementLibrary::load_default();
+    std::string tori;
+    for (int mask : {0, 1}) {
+        const ConfigurationComplex cc = build_periodic_configuration(static_cast<std::uint8_t>(mask), StrongRule{}, library);
+        CertificateSpec spec;
+        spec.name = "torus-" + std::to_string(mask);
+        spec.kind = CertificateKind::Configuration;
+        spec.domain = CertificateDomain::torus(4 * cc.unit);
+        spec.covers = {mask};
+        tori += certificate_to_string(cc.complex, spec);
+    }
+    const std::string elements = read(dir / "elements.cert");
+    const std::size_t n_elements = split_certificates(elements).size();
+    std::vector<ManifestEntry> entries{
+        write_certificate_file(dir, "elements.cert", elements, n_elements, CertificateKind::Element),
+        write_certificate_file(dir, "tori.cert", tori, 2, CertificateKind::Configuration)};
+    write(dir / "manifest", manifest_to_string(entries, 2));
+    ASSERT_EQ(run_checker((dir / "manifest").string()).code, 0);
+    std::size_t tried = 0, rejected = 0;
+    auto expect_reject = [&](const std::string& what) {
+        const CheckerRun r = run_checker((dir / "manifest").string());
+        ++tried;
+        rejected += r.code == 1;
+        EXPECT_EQ(r.code, 1) << what << "\n" << r.out;
+        EXPECT_EQ(r.out.find("VERIFIED"), std::string::npos) << what;
+    };
+    const std::string manifest = read(dir / "manifest");
+    // truncate the file (manifest hash updated, so only the truncation can be caught)
+    for (int k = 1; k < 40; ++k) {
+        const std::string cut = elements.substr(0, elements.size() * k / 40);
+        std::string m = manifest;
+        m.replace(m.find(fnv1a64_hex(elements)), 16, fnv1a64_hex(cut));
+        write(dir / "elements.cert", cut);
+        write(dir / "manifest", m);
+        expect_reject("truncated at " + std::to_string(cut.size()));
+    }
+    write(dir / "elements.cert", elements);
+    // wrong hash: every hex digit of every file's hash
+    std::size_t at = 0;
+    while ((at = manifest.find("fnv1a64 ", at)) != std::string::npos) {
+        at += 8;
+        for (int d = 0; d < 16; ++d) {
+            std::string m = manifest;
+            m[at + d] = m[at + d] == '0' ? '1' : '0';
+            write(dir / "manifest", m);
+            expect_reject("hash digit");
+        }
+    }
+    // wrong counts: total, covers, per-file count; a file dropped
+    const std::string counted = "elements.cert " + std::to_string(n_elements);
+    for (const char* from_c : {"total ", "covers 2", counted.c_str(), "file tori.cert"}) {
+        const std::string from = from_c;
+        std::string m = manifest;
+        const auto p = m.find(from);
+        ASSERT_NE(p, std::string::npos) << from;
+        if (from.rfind("file ", 0) == 0) m.erase(p, m.find('\n', p) + 1 - p);
+        else if (from == "total ") m.insert(p + from.size(), "1");
+        else m.replace(p, from.size(), from.substr(0, from.size() - 1) + "7");
+        write(dir / "manifest", m);
+        expect_reject(from);
+    }
+    write(dir / "manifest", manifest);
+    EXPECT_EQ(run_checker((dir / "manifest").string()).code, 0);
+    std::cout << "[ tampering ] tried " << tried << ", rejected " << rejected << '\n';
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace dualhex
