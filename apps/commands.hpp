@@ -43,6 +43,7 @@ void register_element(CLI::App& app);
 void register_table(CLI::App& app);
 void register_install(CLI::App& app);
 void register_certify(CLI::App& app);
+void register_variants(CLI::App& app);
 
 // --- shared helpers (commands.cpp) ---
 

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     register_table(app);
     register_install(app);
     register_certify(app);
+    register_variants(app);
 
     try {
         app.parse(argc, argv);  // subcommand callbacks run in here

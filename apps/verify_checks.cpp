@@ -135,7 +135,7 @@ CheckRegistry default_checks() {
     add_configuration_checks(r);
     add_grid_checks(r);
     add_scheme_checks(r);
-    add_weak_checks(r);
+    add_variant_checks(r);
     return r;
 }
 
