@@ -136,6 +136,7 @@ CheckRegistry default_checks() {
     add_grid_checks(r);
     add_scheme_checks(r);
     add_variant_checks(r);
+    add_weak_checks(r);
     return r;
 }
 

@@ -39,6 +39,7 @@ void add_configuration_checks(CheckRegistry& registry);
 void add_grid_checks(CheckRegistry& registry);
 void add_scheme_checks(CheckRegistry& registry);  // verify_schemes.cpp
 void add_variant_checks(CheckRegistry& registry);  // verify_variants.cpp
+void add_weak_checks(CheckRegistry& registry);    // verify_weak.cpp
 
 /// Every check that exists so far, in run order.
 CheckRegistry default_checks();
