@@ -205,17 +205,31 @@ private:
         const VertexHandle w = a == v ? b : a;
         constexpr int kMaxSteps = 12;
         if (!inc_.is_boundary(e)) {
-            const auto cells = inc_.edge_cells(e);
-            if (cells.empty()) return faces_.fail("an edge without cells");
-            CellHandle c = cells[0];
+            // Each face at e joins the cell walking it v -> w (leaving, counter-clockwise)
+            // to the other one: one loop scan per face, then follow the links.
+            const auto faces = inc_.edge_faces(e);
+            if (faces.empty() || faces.size() > kMaxSteps) return faces_.fail("an interior edge with too many faces");
+            std::array<std::pair<CellHandle, CellHandle>, kMaxSteps> link{};
+            std::size_t n = 0;
+            for (FaceHandle f : faces) {
+                const auto cells = inc_.face_cells(f);
+                const auto hfs = inc_.face_halffaces(f);
+                if (cells.size() != 2) return faces_.fail("a face around an interior edge without two cells");
+                const bool side0 = walks(k_, HalfFaceHandle(f, 0), v, w);
+                const std::size_t from = (hfs[0].side() == 0) == side0 ? 0 : 1;
+                if ((hfs[1 - from].side() == 0) == side0) return faces_.fail("cells around an interior edge are not consistently oriented");
+                link[n++] = {cells[from], cells[1 - from]};
+            }
+            const CellHandle first = link[0].first;
+            CellHandle c = first;
             for (int step = 0;; ++step) {
                 if (step == kMaxSteps) return faces_.fail("cells around an interior edge do not close");
                 faces_.push(c.index());
-                const FaceHandle f = exit_face(e, c, v, w);
-                if (!f.valid()) return faces_.fail("cells around an interior edge are not consistently oriented");
-                c = inc_.other_cell(f, c);
-                if (!c.valid()) return faces_.fail("a face around an interior edge without two cells");
-                if (c == cells[0]) return;
+                std::size_t i = 0;
+                while (i < n && link[i].first != c) ++i;
+                if (i == n) return faces_.fail("cells around an interior edge are not consistently oriented");
+                c = link[i].second;
+                if (c == first) return;
             }
         }
         FaceHandle entry;
