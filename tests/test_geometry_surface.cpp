@@ -3,6 +3,8 @@
 // offending edges named; every format OpenMesh writes is read back.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
@@ -113,6 +115,23 @@ TEST(SurfaceRead, MissingUnknownAndMalformedFilesAreErrors) {
     (void)error_of(range);
     const auto empty = write_text(dir.file("empty.off"), "OFF\n0 0 0\n");
     (void)error_of(empty);
+}
+
+TEST(SurfaceRead, GarbageAndTruncatedFilesAreErrorsNotCrashes) {
+    TempDir dir;
+    std::mt19937 rng(5);
+    std::string bytes(3000, '\0');
+    for (char& c : bytes) c = static_cast<char>(rng() & 0xff);
+    for (const char* ext : {".stl", ".ply", ".obj", ".off"}) {
+        (void)error_of(write_text(dir.file(std::string("garbage") + ext), bytes));
+        (void)error_of(write_text(dir.file(std::string("empty") + ext), ""));
+    }
+    // A binary STL header announcing 2^31 - 1 triangles, followed by 100 bytes.
+    std::string stl(80, '\0');
+    stl += std::string("\xff\xff\xff\x7f", 4) + std::string(100, '\1');
+    (void)error_of(write_text(dir.file("huge.stl"), stl));
+    (void)error_of(write_text(dir.file("cut.stl"), "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\n"));
+    (void)error_of(write_text(dir.file("cut.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n"));
 }
 
 TEST(SurfaceRead, QuadsAreTriangulatedAndInwardSurfacesFlipped) {
