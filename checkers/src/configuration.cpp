@@ -243,10 +243,17 @@ ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int
                                     w[a] = ctx.application_point[a] + (ctx.direction[static_cast<std::size_t>(a)] > 0
                                                                            ? 2 * size * local[a]
                                                                            : -2 * size * (local[a] + 1));
-                                const int other = level_at(w);
-                                if (other > lv) ctx.set_fine(i, j, k);
-                                if (other > lv + 1) ctx.set_two_finer(i, j, k);
+                                if (level_at(w) > lv) ctx.set_fine(i, j, k);
                             }
+                    for (int a = 0; a < 3; ++a) {  // the leaf-sized cell across each inner edge
+                        LatticePoint w;
+                        for (int t = 0; t < 3; ++t) {
+                            const int local = t == a ? 0 : -1;
+                            w[t] = ctx.application_point[t] +
+                                   (ctx.direction[static_cast<std::size_t>(t)] > 0 ? size * local : -size * (local + 1));
+                        }
+                        if (level_at(w) > lv + 1) ctx.set_two_finer_across_edge(a);
+                    }
                     leaf.placement = rule.place(ctx);
                     if (leaf.placement) {
                         detail::check_placement_symmetry(*leaf.placement);

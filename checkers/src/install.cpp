@@ -30,39 +30,47 @@ void frame_of(const Leaf& leaf, LeafContext& ctx) {
     }
 }
 
+// Weak balance: for each inner edge of the leaf whose two adjacent faces are interfaces,
+// is the leaf-sized cell sharing that edge (its diagonal neighbour) refined twice, i.e. does
+// it hold leaves two or more levels finer? (Pairing: a cell's children are all leaves or all
+// subdivided, so its first child tells.) Only concave edges can need it, so only they are
+// looked up.
+void set_edge_two_finer(const LeafGrid& grid, const Leaf& leaf, OutsideRoot outside, LeafContext& ctx) {
+    const std::int64_t cells = std::int64_t{1} << leaf.level;
+    for (int a = 0; a < 3; ++a) {
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        int fb[3] = {0, 0, 0}, fc[3] = {0, 0, 0};
+        fb[b] = -1;
+        fc[c] = -1;
+        if (!ctx.fine(fb[0], fb[1], fb[2]) || !ctx.fine(fc[0], fc[1], fc[2])) continue;
+        Leaf cell{leaf.level, 0, 0, 0};
+        bool inside = true;
+        for (int t = 0; t < 3; ++t) {
+            const int local = t == a ? 0 : -1;
+            std::int64_t x = ctx.application_point[t] +
+                             (ctx.direction[static_cast<std::size_t>(t)] > 0 ? local : -local - 1);
+            if (x < 0 || x >= cells) {
+                inside = false;
+                x = mirror(x, cells);
+            }
+            (t == 0 ? cell.i : t == 1 ? cell.j : cell.k) = x;
+        }
+        if (!inside && outside == OutsideRoot::Coarse) continue;
+        if (grid.is_subdivided(cell) && grid.is_subdivided(children(cell)[0])) ctx.set_two_finer_across_edge(a);
+    }
+}
+
 // World neighbourhood masks per (level L, application point / 2), for every application
 // point some fine octant cube reaches (absent: all coarse).
 class ContextIndex {
 public:
-    ContextIndex(const LeafGrid& grid, OutsideRoot outside) : masks_(grid.size() / 4 + 16) {
+    ContextIndex(const LeafGrid& grid, OutsideRoot outside)
+        : grid_(&grid), outside_(outside), masks_(grid.size() / 4 + 16) {
         for (const Leaf& node : grid.interior_nodes()) {
             if (node.level == 0 || child_index(node) != 0) continue;
-            const int L = node.level;  // leaves of level L see parent(node) as a fine octant cube
-            const Leaf c = parent(node);
-            const std::int64_t n = std::int64_t{1} << (L - 1);
-            std::array<std::array<std::int64_t, 5>, 3> images{};
-            std::array<int, 3> count{};
-            for (int a = 0; a < 3; ++a) {
-                auto& img = images[static_cast<std::size_t>(a)];
-                int& k = count[static_cast<std::size_t>(a)];
-                img[static_cast<std::size_t>(k++)] = c.coord(a);
-                if (outside == OutsideRoot::Mirror)
-                    for (std::int64_t x : {std::int64_t{-2}, std::int64_t{-1}, n, n + 1})
-                        if (mirror(x, n) == c.coord(a) && x != c.coord(a)) img[static_cast<std::size_t>(k++)] = x;
-            }
-            for (int ix = 0; ix < count[0]; ++ix)
-                for (int iy = 0; iy < count[1]; ++iy)
-                    for (int iz = 0; iz < count[2]; ++iz) {
-                        const std::int64_t cx = images[0][static_cast<std::size_t>(ix)],
-                                           cy = images[1][static_cast<std::size_t>(iy)],
-                                           cz = images[2][static_cast<std::size_t>(iz)];
-                        for (int w = 0; w < 64; ++w) {
-                            const std::int64_t vx = cx - ((w & 3) - 2), vy = cy - (((w >> 2) & 3) - 2),
-                                               vz = cz - (((w >> 4) & 3) - 2);
-                            if (vx < 0 || vy < 0 || vz < 0 || vx > n || vy > n || vz > n) continue;
-                            *masks_.insert(Leaf{L, vx, vy, vz}, 0).first |= std::uint64_t{1} << w;
-                        }
-                    }
+            // Leaves of level node.level see parent(node) as a fine octant cube (pairing: all
+            // of node's siblings are subdivided too).
+            scatter(masks_, node.level, parent(node));
         }
     }
 
@@ -73,10 +81,42 @@ public:
         const LatticePoint& P = ctx.application_point;
         if (const std::uint64_t* m = masks_.find(Leaf{leaf.level, P.x / 2, P.y / 2, P.z / 2}))
             ctx.neighbourhood = to_local_neighbourhood(*m, ctx.direction);
+        set_edge_two_finer(*grid_, leaf, outside_, ctx);
         return ctx;
     }
 
 private:
+    // Marks octant cube c (level L - 1) in the masks of the level-L application points
+    // whose 4x4x4 neighbourhood contains it (and its mirror images across the root faces).
+    void scatter(CellMap<std::uint64_t>& masks, int L, const Leaf& c) {
+        const std::int64_t n = std::int64_t{1} << (L - 1);
+        std::array<std::array<std::int64_t, 5>, 3> images{};
+        std::array<int, 3> count{};
+        for (int a = 0; a < 3; ++a) {
+            auto& img = images[static_cast<std::size_t>(a)];
+            int& k = count[static_cast<std::size_t>(a)];
+            img[static_cast<std::size_t>(k++)] = c.coord(a);
+            if (outside_ == OutsideRoot::Mirror)
+                for (std::int64_t x : {std::int64_t{-2}, std::int64_t{-1}, n, n + 1})
+                    if (mirror(x, n) == c.coord(a) && x != c.coord(a)) img[static_cast<std::size_t>(k++)] = x;
+        }
+        for (int ix = 0; ix < count[0]; ++ix)
+            for (int iy = 0; iy < count[1]; ++iy)
+                for (int iz = 0; iz < count[2]; ++iz) {
+                    const std::int64_t cx = images[0][static_cast<std::size_t>(ix)],
+                                       cy = images[1][static_cast<std::size_t>(iy)],
+                                       cz = images[2][static_cast<std::size_t>(iz)];
+                    for (int w = 0; w < 64; ++w) {
+                        const std::int64_t vx = cx - ((w & 3) - 2), vy = cy - (((w >> 2) & 3) - 2),
+                                           vz = cz - (((w >> 4) & 3) - 2);
+                        if (vx < 0 || vy < 0 || vz < 0 || vx > n || vy > n || vz > n) continue;
+                        *masks.insert(Leaf{L, vx, vy, vz}, 0).first |= std::uint64_t{1} << w;
+                    }
+                }
+    }
+
+    const LeafGrid* grid_;
+    OutsideRoot outside_;
     CellMap<std::uint64_t> masks_;
 };
 
@@ -129,6 +169,7 @@ LeafContext leaf_context(const LeafGrid& grid, std::size_t n, OutsideRoot outsid
                 for (const Leaf& child : children(cube)) fine = fine && grid.is_subdivided(child);
                 if (fine) ctx.set_fine(i, j, k);
             }
+    set_edge_two_finer(grid, leaf, outside, ctx);
     return ctx;
 }
 

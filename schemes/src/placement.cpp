@@ -20,18 +20,6 @@ bool LeafContext::fine(int i, int j, int k) const {
     return (neighbourhood >> neighbourhood_bit(i, j, k)) & 1U;
 }
 
-bool LeafContext::two_finer(int i, int j, int k) const {
-    check_index(i, j, k);
-    return (finer2 >> neighbourhood_bit(i, j, k)) & 1U;
-}
-
-void LeafContext::set_two_finer(int i, int j, int k, bool value) {
-    check_index(i, j, k);
-    const std::uint64_t bit = std::uint64_t{1} << neighbourhood_bit(i, j, k);
-    finer2 = value ? (finer2 | bit) : (finer2 & ~bit);
-    if (value) set_fine(i, j, k, true);
-}
-
 void LeafContext::set_fine(int i, int j, int k, bool value) {
     check_index(i, j, k);
     const std::uint64_t bit = std::uint64_t{1} << neighbourhood_bit(i, j, k);

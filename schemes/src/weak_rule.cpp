@@ -37,14 +37,10 @@ unsigned mr_edges(const LeafContext& c) {
     unsigned edges = 0;
     for (int a = 0; a < 3; ++a) {
         const int b = (a + 1) % 3, d = (a + 2) % 3;
-        std::array<int, 3> fb{0, 0, 0}, fd{0, 0, 0}, diagonal{0, 0, 0};
+        std::array<int, 3> fb{0, 0, 0}, fd{0, 0, 0};
         fb[static_cast<std::size_t>(b)] = -1;
         fd[static_cast<std::size_t>(d)] = -1;
-        diagonal[static_cast<std::size_t>(b)] = -1;
-        diagonal[static_cast<std::size_t>(d)] = -1;
-        if (c.fine(fb[0], fb[1], fb[2]) && c.fine(fd[0], fd[1], fd[2]) &&
-            c.two_finer(diagonal[0], diagonal[1], diagonal[2]))
-            edges |= 1u << a;
+        if (c.fine(fb[0], fb[1], fb[2]) && c.fine(fd[0], fd[1], fd[2]) && c.two_finer_across_edge(a)) edges |= 1u << a;
     }
     return edges;
 }

@@ -27,7 +27,7 @@ namespace dualhex {
 
 /// A periodic grid of n_octants^3 octant cubes, each at level(ox, oy, oz) in {0, 1, 2}
 /// (0 coarsest: 2x2x2 leaves; 1: 4x4x4; 2: 8x8x8, plain hexes). Leaves of levels 0 and 1
-/// get the rule's placement with contexts that include LeafContext::two_finer, so a weak
+/// get the rule's placement with contexts that include LeafContext::edge_two_finer, so a weak
 /// rule sees the two-level jumps. The caller keeps face-adjacent octant cubes within one
 /// level of each other (weak balance). Lattice: a level-1 leaf is U, level 0 is 2U.
 [[nodiscard]] ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,

@@ -38,10 +38,11 @@ struct LeafContext {
     std::array<int, 3> direction{1, 1, 1};  ///< d: the leaf is P + [0,d]
     /// Bit neighbourhood_bit(i,j,k) set iff that local octant cube is fine.
     std::uint64_t neighbourhood = 0;
-    /// Weakly balanced grids: bit set iff that octant cube holds leaves at least TWO levels
-    /// finer than the leaf (always a subset of `neighbourhood`). Zero in strongly balanced
-    /// grids.
-    std::uint64_t finer2 = 0;
+    /// Weakly balanced grids: bit a set iff the leaf-sized cell sharing the leaf's inner
+    /// a-edge (its diagonal neighbour across that edge, inside the octant at local
+    /// -e_b - e_c) holds leaves two or more levels finer than the leaf. Zero in strongly
+    /// balanced grids.
+    std::uint8_t edge_two_finer = 0;
 
     [[nodiscard]] static constexpr int neighbourhood_bit(int i, int j, int k) {
         return (i + 2) + 4 * (j + 2) + 16 * (k + 2);
@@ -49,10 +50,12 @@ struct LeafContext {
     /// i,j,k in {-2,-1,0,1} (local frame); throws std::out_of_range otherwise.
     [[nodiscard]] bool fine(int i, int j, int k) const;
     void set_fine(int i, int j, int k, bool value = true);
-    /// i,j,k as for fine(): does that octant cube hold leaves two or more levels finer?
-    [[nodiscard]] bool two_finer(int i, int j, int k) const;
-    /// Marks that octant cube as two or more levels finer (and fine).
-    void set_two_finer(int i, int j, int k, bool value = true);
+    /// Bit `axis` of edge_two_finer (axis 0, 1, 2).
+    [[nodiscard]] bool two_finer_across_edge(int axis) const { return (edge_two_finer >> axis) & 1U; }
+    void set_two_finer_across_edge(int axis, bool value = true) {
+        const auto bit = static_cast<std::uint8_t>(1U << axis);
+        edge_two_finer = static_cast<std::uint8_t>(value ? (edge_two_finer | bit) : (edge_two_finer & ~bit));
+    }
 
     /// The 8 octants around P as a grid-convention configuration mask in the LOCAL frame:
     /// bit b = octant (b&1 ? +x : -x, b&2 ? +y : -y, b&4 ? +z : -z) is fine.

@@ -2,7 +2,8 @@
 // The transition rule for weakly balanced paired grids (docs/scheme-derivation.md, "Weakly
 // balanced grids"): the strong rule, plus the MR elements. Under weak balance the only new
 // situation for a coarse leaf is a concave inner edge (both adjacent faces interfaces)
-// whose diagonal octant holds leaves two levels finer (LeafContext::two_finer): the finer
+// whose diagonal neighbour across that edge (the leaf-sized cell sharing it) holds leaves
+// two levels finer (LeafContext::edge_two_finer): the finer
 // transition's chains bend around that edge through this leaf. The element is then the
 // strong element (E, VS or VC) truncated at the midpoint of each such edge: E-MR, VS-MR,
 // VC1-MR, VC2-MR, VC3-MR (schemes/elements). Their canonical frames: E-MR and VS-MR are
