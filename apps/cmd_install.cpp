@@ -15,6 +15,7 @@
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
+#include "dualhex/schemes/weak_rule.hpp"
 #include "dualhex/topology/clipped_dual.hpp"
 #include "dualhex/topology/histograms.hpp"
 #include "dualhex/topology/incidence.hpp"
@@ -23,7 +24,7 @@ namespace dualhex::app {
 namespace {
 
 struct InstallOptionsCli {
-    std::string input, prefix, outside = "coarse";
+    std::string input, prefix, outside = "coarse", balance = "weak";
     bool json = false, force = false;
 };
 
@@ -78,8 +79,13 @@ void run_install(const InstallOptionsCli& opt) {
     t0 = Clock::now();
     InstallResult installed;
     try {
-        installed = install(grid, StrongRule(), *library, {.outside_root = outside, .balance = Balance::Strong});
-    } catch (const InstallError& e) {  // not paired / not strongly balanced: bad input
+        // The weak rule is the strong rule plus the MR elements, which it only places where a
+        // concave edge meets leaves two levels finer: on strongly balanced grids both agree.
+        const Balance balance = opt.balance == "strong" ? Balance::Strong : Balance::Weak;
+        installed = opt.balance == "strong"
+                        ? install(grid, StrongRule(), *library, {.outside_root = outside, .balance = balance})
+                        : install(grid, WeakRule(), *library, {.outside_root = outside, .balance = balance});
+    } catch (const InstallError& e) {  // not paired / not balanced as required: bad input
         std::cerr << "error: " << opt.input << ": " << e.what() << '\n';
         throw Exit{kInputError};
     }
@@ -143,8 +149,8 @@ void run_install(const InstallOptionsCli& opt) {
                     {"ms", {{"read", t_read}, {"install", t_install}, {"dual", t_dual}, {"verify", t_verify}, {"write", t_write}}}});
     } else {
         std::printf("%s: %zu leaves, levels %d..%d\n", opt.input.c_str(), grid.size(), grid.min_level(), grid.max_level());
-        std::printf("installed (strong rule, outside root %s): %zu cells, %zu not hexahedra, %zu vertices\n",
-                    opt.outside.c_str(), k.n_cells(), non_hex, k.n_vertices());
+        std::printf("installed (%s rule, outside root %s): %zu cells, %zu not hexahedra, %zu vertices\n",
+                    opt.balance.c_str(), opt.outside.c_str(), k.n_cells(), non_hex, k.n_vertices());
         std::printf("elements (leaves):            %s\n", histogram_text(elements).c_str());
         std::printf("face sizes:                   %s\n", histogram_text(face_sizes).c_str());
         std::printf("clipped dual:                 %zu hexes over %zu points, %zu vertices without a cube\n",
@@ -166,9 +172,13 @@ void register_install(CLI::App& app) {
     auto opt = std::make_shared<InstallOptionsCli>();
     CLI::App* sub = app.add_subcommand(
         "install",
-        "Install the strongly balanced elements into a paired, strongly balanced grid, verify, and write the "
+        "Install the elements into a paired, weakly (or strongly) balanced grid, verify, and write the "
         "polyhedral complex (PREFIX.poly.vtk) and its clipped dual hex mesh (PREFIX.hex.vtk)");
-    sub->add_option("grid", opt->input, "Leaf file (paired, strongly balanced)")->required();
+    sub->add_option("grid", opt->input, "Leaf file (paired; weakly balanced, or strongly with --balance strong)")->required();
+    sub->add_option("--balance", opt->balance,
+                    "weak (default: the weak rule, 13 elements; accepts strongly balanced grids too) or strong "
+                    "(the 8 strong elements; refuses grids that are not strongly balanced)")
+        ->check(CLI::IsMember({"weak", "strong"}));
     sub->add_option("-o,--output", opt->prefix, "Output prefix: writes PREFIX.poly.vtk and PREFIX.hex.vtk")->required();
     sub->add_flag("--force", opt->force, "Overwrite the output files if they exist");
     sub->add_option("--outside-root", opt->outside, "Octant cubes outside the root: coarse (default) or mirror")
