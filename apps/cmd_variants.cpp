@@ -69,6 +69,8 @@ nlohmann::json variants_json(const variants::VariantsReport& report) {
                                {"fine_octants", c.fine},
                                {"free_crossings", c.free_crossings},
                                {"enumerated", c.enumerated},
+                               {"componentwise", c.componentwise},
+                               {"components", c.components},
                                {"assignments", c.assignments},
                                {"valid", c.valid},
                                {"strong_dual_edge_valences", histogram_json(c.strong_valences)},

@@ -105,6 +105,13 @@ struct CombinedClass {
     std::size_t free_crossings = 0;  ///< crossings touched by a bend
     std::size_t assignments = 0, valid = 0;
     bool enumerated = false;  ///< false: too many free crossings (> limit), strong rule only
+    /// More than `limit` free crossings: each component (crossings linked by a leaf with two
+    /// or three interfaces) enumerated on its own, the other crossings at StrongRule's choice.
+    /// Exact for the ranking: the torus histogram is a sum of per-leaf terms (inner faces +
+    /// half the boundary faces of each leaf's element), so a joint assignment's histogram is
+    /// the strong one plus the per-component differences, and lexicographic order is additive.
+    bool componentwise = false;
+    std::vector<std::size_t> components;  ///< component sizes, largest first
     std::map<int, std::size_t> strong_valences;  ///< StrongRule's torus
     std::map<int, std::size_t> best_valences;    ///< best-ranked valid assignment's torus
     std::size_t assignments_better = 0;          ///< valid assignments ranked above StrongRule
