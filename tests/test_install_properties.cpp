@@ -26,8 +26,10 @@
 #include "dualhex/checkers/install.hpp"
 #include "dualhex/checkers/library.hpp"
 #include "dualhex/grid/leaf_file.hpp"
+#include "dualhex/grid/predicates.hpp"
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
+#include "dualhex/schemes/weak_rule.hpp"
 #include "dualhex/topology/clipped_dual.hpp"
 #include "dualhex/topology/histograms.hpp"
 #include "test_grid_generators.hpp"
@@ -78,14 +80,18 @@ rc::Gen<LeafGrid> gen_deep_grid(int depth) {
 const char* name(OutsideRoot o) { return o == OutsideRoot::Mirror ? "mirror" : "coarse"; }
 
 // Installs `paired` with the policy and checks everything; on failure logs the grid.
-void check_installation(const LeafGrid& paired, OutsideRoot outside) {
-    const InstallResult r = install(paired, StrongRule(), library(), {.outside_root = outside, .balance = Balance::Strong});
+// Strong: the strong rule, valences <= 6; weak: the weak rule, valences <= 7 (DESIGN.md 6).
+void check_installation(const LeafGrid& paired, OutsideRoot outside, Balance mode = Balance::Strong) {
+    const bool weak = mode == Balance::Weak;
+    const InstallResult r = weak ? install(paired, WeakRule(), library(), {.outside_root = outside, .balance = mode})
+                                 : install(paired, StrongRule(), library(), {.outside_root = outside, .balance = mode});
     const InstallVerification v = verify_installation(r);
     const std::int64_t extent = r.unit << r.max_level;
     const ClippedDual dual = clipped_dual(r.complex, Incidence(r.complex), {0, 0, 0}, {extent, extent, extent});
     const auto valences = clipped_dual_edge_valences(dual);
     const int max_valence = valences.empty() ? 0 : valences.rbegin()->first;
-    const bool ok = v.ok() && dual.all_cubes() && dual.hexes.size() == r.complex.n_vertices() && max_valence <= 6;
+    const bool ok = v.ok() && dual.all_cubes() && dual.hexes.size() == r.complex.n_vertices() &&
+                    max_valence <= (weak ? 7 : 6);
     if (!ok) {
         std::ostringstream why;
         why << "outside-root " << name(outside) << ": " << v.summary() << "; clipped dual " << dual.hexes.size() << "/"
@@ -93,7 +99,8 @@ void check_installation(const LeafGrid& paired, OutsideRoot outside) {
         if (!dual.errors.empty()) why << " (" << dual.errors.front().message << ")";
         why << "; max interior dual edge valence " << max_valence;
         RC_LOG() << why.str() << "\nreplay: dualhex install GRID.leaves -o out --outside-root " << name(outside)
-                 << "\n--- GRID.leaves (paired, strongly balanced) ---\n"
+                 << " --balance " << (weak ? "weak" : "strong") << "\n--- GRID.leaves (paired, "
+                 << (weak ? "weakly" : "strongly") << " balanced) ---\n"
                  << format_leaves(paired, "property-test counterexample") << "--- end ---\n";
         RC_FAIL(why.str());
     }
@@ -118,6 +125,32 @@ RC_GTEST_PROP(InstallProperties, ShallowDenseRandomGridsInstallToAllHex, ()) {
 
 RC_GTEST_PROP(InstallProperties, DeepRandomGridsInstallToAllHex, ()) {
     check_grid(*gen_deep_grid(deep_depth()));
+}
+
+// Weakly balanced grids: pair(grid, Weak), the weak rule (with the MR elements), both root
+// policies; and on strongly balanced grids the weak rule places exactly what the strong one does.
+void check_weak_grid(const LeafGrid& grid) {
+    const LeafGrid paired = pair(grid, Balance::Weak);
+    RC_CLASSIFY(!is_strongly_balanced(paired).ok, "not strongly balanced");
+    check_installation(paired, OutsideRoot::Coarse, Balance::Weak);
+    check_installation(paired, OutsideRoot::Mirror, Balance::Weak);
+}
+
+RC_GTEST_PROP(InstallProperties, WeaklyBalancedDenseRandomGridsInstallToAllHex, ()) {
+    check_weak_grid(*testing::gen_octree(dense_depth()));
+}
+
+RC_GTEST_PROP(InstallProperties, WeaklyBalancedDeepRandomGridsInstallToAllHex, ()) {
+    check_weak_grid(*gen_deep_grid(deep_depth()));
+}
+
+RC_GTEST_PROP(InstallProperties, WeakRuleEqualsStrongRuleOnStronglyBalancedGrids, ()) {
+    const LeafGrid paired = pair(*testing::gen_octree(dense_depth() - 1), Balance::Strong);
+    const auto contexts = leaf_contexts(paired, OutsideRoot::Coarse);
+    for (const LeafContext& c : contexts) {
+        RC_ASSERT(c.edge_two_finer == 0);
+        RC_ASSERT(WeakRule().place(c) == StrongRule().place(c));
+    }
 }
 
 // The counterexample printer round-trips: what a failure logs replays as the same grid.
