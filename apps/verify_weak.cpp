@@ -52,11 +52,14 @@ CheckOutcome check_weak_exhaustive() {
     CheckOutcome out;
     out.status = r.all_passed() && r.max_dual_edge_valence <= 7 ? CheckStatus::kPass : CheckStatus::kFail;
     out.summary = std::to_string(r.passed) + "/" + std::to_string(r.configurations) +
-                  " weakly balanced configurations pass on the periodic embedding (" + std::to_string(r.classes) +
+                  " weakly balanced configurations pass (torus " + std::to_string(r.periodic_passed) + ", window " +
+                  std::to_string(r.window_passed) + "; " + std::to_string(r.classes) +
                   " classes, " + std::to_string(r.three_level_classes) + " with three levels), max interior dual edge valence " +
                   std::to_string(r.max_dual_edge_valence);
     out.details = {{"configurations", r.configurations},
                    {"passed", r.passed},
+                   {"periodic_passed", r.periodic_passed},
+                   {"window_passed", r.window_passed},
                    {"classes", r.three_level_classes},
                    {"classes_all", r.classes},
                    {"max_dual_edge_valence", r.max_dual_edge_valence},

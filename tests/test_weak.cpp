@@ -43,6 +43,8 @@ TEST(WeakRule, EveryWeakConfigurationPasses) {
     const auto r = run_weak_exhaustive(rule, library());
     EXPECT_EQ(r.configurations, 487);
     EXPECT_EQ(r.passed, 487) << (r.failures.empty() ? "" : r.failures.front());
+    EXPECT_EQ(r.periodic_passed, 487);
+    EXPECT_EQ(r.window_passed, 487);
     EXPECT_EQ(r.max_dual_edge_valence, 7);
     for (const char* name : {"E-MR", "VC1-MR", "VC2-MR", "VC3-MR"}) EXPECT_GT(r.elements.count(name), 0u) << name;
 }

@@ -193,28 +193,22 @@ ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& 
     return assemble(mask, octants, fine, [](const LatticePoint& p) { return p; }, rule, library);
 }
 
-ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
-                                           const TransitionRule& rule, const ElementLibrary& library) {
-    detail::TemplateCache cache(library);
-    const std::int64_t U = cache.unit();
-    const std::int64_t octant = 4 * U;  // an octant cube: 2 level-0 leaves of 2U
-    const std::int64_t period = n_octants * octant;
-    const auto wrap = [period](const LatticePoint& p) {
-        return LatticePoint{floor_mod(p.x, period), floor_mod(p.y, period), floor_mod(p.z, period)};
-    };
-    const auto level_at = [&](const LatticePoint& p) {
-        return level(static_cast<int>(floor_mod(p.x, period) / octant), static_cast<int>(floor_mod(p.y, period) / octant),
-                     static_cast<int>(floor_mod(p.z, period) / octant));
-    };
+// Three-level assembly over octant cubes first..first+n-1 per axis (octant cube = 4U: two
+// level-0 leaves of 2U). level_at(p): the level of the octant cube containing lattice point p
+// (any p: the contexts reach beyond the built cubes); wrap: lattice point -> key.
+template <class LevelAt, class Wrap>
+ConfigurationComplex assemble_levels(int first, int n_octants, LevelAt&& level_at, Wrap&& wrap, std::int64_t U,
+                                     detail::TemplateCache& cache, const TransitionRule& rule) {
+    const std::int64_t octant = 4 * U;
     ConfigurationComplex out;
     out.unit = U;
     ComplexBuilder builder;
     std::vector<VertexHandle> vs, loop;
     std::vector<HalfFaceHandle> hfs;
-    for (int ox = 0; ox < n_octants; ++ox)
-        for (int oy = 0; oy < n_octants; ++oy)
-            for (int oz = 0; oz < n_octants; ++oz) {
-                const int lv = level(ox, oy, oz);
+    for (int ox = first; ox < first + n_octants; ++ox)
+        for (int oy = first; oy < first + n_octants; ++oy)
+            for (int oz = first; oz < first + n_octants; ++oz) {
+                const int lv = level_at(LatticePoint{ox * octant, oy * octant, oz * octant});
                 if (lv < 0 || lv > 2) throw std::invalid_argument("build_periodic_levels: level must be 0, 1 or 2");
                 const LatticePoint lo{ox * octant, oy * octant, oz * octant};
                 const std::int64_t size = (2 * U) >> lv;  // leaf size at this level
@@ -270,10 +264,60 @@ ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int
     return out;
 }
 
+ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
+                                           const TransitionRule& rule, const ElementLibrary& library) {
+    detail::TemplateCache cache(library);
+    const std::int64_t U = cache.unit();
+    const std::int64_t octant = 4 * U;
+    const std::int64_t period = n_octants * octant;
+    const auto wrap = [period](const LatticePoint& p) {
+        return LatticePoint{floor_mod(p.x, period), floor_mod(p.y, period), floor_mod(p.z, period)};
+    };
+    const auto level_at = [&](const LatticePoint& p) {
+        return level(static_cast<int>(floor_mod(p.x, period) / octant), static_cast<int>(floor_mod(p.y, period) / octant),
+                     static_cast<int>(floor_mod(p.z, period) / octant));
+    };
+    return assemble_levels(0, n_octants, level_at, wrap, U, cache, rule);
+}
+
+ConfigurationComplex build_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
+                                         const ElementLibrary& library) {
+    detail::TemplateCache cache(library);
+    const std::int64_t U = cache.unit();
+    const std::int64_t octant = 4 * U;
+    // The window: the 8 octant cubes around P = origin (indices -1, 0); beyond, the nearest.
+    const auto level_at = [&](const LatticePoint& p) {
+        int b = 0;
+        for (int a = 0; a < 3; ++a)
+            if (p[a] >= 0) b |= 1 << a;
+        (void)octant;
+        return levels[static_cast<std::size_t>(b)];
+    };
+    return assemble_levels(-1, 2, level_at, [](const LatticePoint& p) { return p; }, U, cache, rule);
+}
+
 ConfigurationReport check_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
                                           const TransitionRule& rule, const ElementLibrary& library) {
     return check(0, [&] { return build_periodic_levels(level, n_octants, rule, library); },
                  [](const LatticePoint&) { return true; }, [](const CellComplex&, std::span<const VertexHandle>) { return false; });
+}
+
+ConfigurationReport check_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
+                                        const ElementLibrary& library) {
+    const std::int64_t half = 4 * detail::common_unit(library);  // the window is [-4U, 4U]^3
+    const auto inside = [half](const LatticePoint& p) {
+        return -half < p.x && p.x < half && -half < p.y && p.y < half && -half < p.z && p.z < half;
+    };
+    const auto on_surface = [half](const CellComplex& cx, std::span<const VertexHandle> loop) {
+        for (int a = 0; a < 3; ++a)
+            for (std::int64_t side : {-half, half}) {
+                bool all = true;
+                for (VertexHandle v : loop) all = all && cx.position(v)[a] == side;
+                if (all) return true;
+            }
+        return false;
+    };
+    return check(0, [&] { return build_window_levels(levels, rule, library); }, inside, on_surface);
 }
 
 ConfigurationReport check_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {

@@ -55,10 +55,15 @@ WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const Eleme
         if (*std::max_element(lv.begin(), lv.end()) == 2) three.insert(key);
         const auto level = [&lv](int x, int y, int z) { return int(lv[(x & 1) | ((y & 1) << 1) | ((z & 1) << 2)]); };
         const ConfigurationReport report = check_periodic_levels(level, 2, rule, library);
-        if (report.ok())
+        std::array<int, 8> levels{};
+        for (int b = 0; b < 8; ++b) levels[static_cast<std::size_t>(b)] = lv[static_cast<std::size_t>(b)];
+        const ConfigurationReport window = check_window_levels(levels, rule, library);
+        r.periodic_passed += report.ok();
+        r.window_passed += window.ok();
+        if (report.ok() && window.ok())
             ++r.passed;
         else
-            r.failures.push_back(report.summary());
+            r.failures.push_back((report.ok() ? "window " + window.summary() : "torus " + report.summary()));
         for (const auto& [name, n] : report.elements) r.elements[name] += n;
         if (!report.dual_edge_valences.empty())
             r.max_dual_edge_valence = std::max(r.max_dual_edge_valence, report.dual_edge_valences.rbegin()->first);

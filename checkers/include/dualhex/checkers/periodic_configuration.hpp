@@ -8,6 +8,7 @@
 // the complex is closed and every vertex is interior. Leaf contexts wrap around (octant
 // cube indices mod 2). Every 2x2x2 window of the torus is again one of the 256 masks
 // (all in the mask's class: the 8 application points see its reflections).
+#include <array>
 #include <functional>
 
 #include "dualhex/checkers/configuration_report.hpp"
@@ -34,5 +35,13 @@ namespace dualhex {
                                                          const TransitionRule& rule, const ElementLibrary& library);
 [[nodiscard]] ConfigurationReport check_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
                                                         const TransitionRule& rule, const ElementLibrary& library);
+
+/// The same configuration in its window: the 8 octant cubes around the application point
+/// (the origin), levels[b] for octant b (grid convention), the octants beyond extended
+/// outward; only vertices strictly inside the window are checked.
+[[nodiscard]] ConfigurationComplex build_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
+                                                       const ElementLibrary& library);
+[[nodiscard]] ConfigurationReport check_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
+                                                      const ElementLibrary& library);
 
 }  // namespace dualhex

@@ -5,8 +5,9 @@
 // l, l+1 or l+2 (relative to the coarsest present); weak balance: octants sharing a face
 // differ by at most one level. Enumerated: 487 such assignments, 255 with two levels and
 // 232 with three; classes under the 48 cube symmetries (acting on the octants). Each is
-// checked on the periodic embedding (build_periodic_levels with n = 2), where every vertex
-// is interior.
+// checked in both domains: the periodic embedding (build_periodic_levels with n = 2),
+// where every vertex is interior, and the window around the application point
+// (build_window_levels, octants extended outward, inner vertices checked).
 #include <array>
 #include <map>
 #include <string>
@@ -27,7 +28,8 @@ using LevelAssignment = std::array<std::uint8_t, 8>;
 [[nodiscard]] LevelAssignment canonical(const LevelAssignment& levels);
 
 struct WeakExhaustiveResult {
-    int configurations = 0, passed = 0;
+    int configurations = 0, passed = 0;    ///< passed: both domains
+    int periodic_passed = 0, window_passed = 0;
     int classes = 0, three_level_classes = 0;
     int max_dual_edge_valence = 0;
     std::map<std::string, std::size_t> elements;  ///< placements over all configurations
