@@ -153,6 +153,14 @@ int main(int argc, char** argv) {
         const LeafGrid grid = read_leaf_file(file);
         std::printf("%s: %zu leaves (strong rule)\n", file.filename().c_str(), grid.size());
         row("read", now() - t, "cpu " + fmt(cpu() - c));
+        if (std::getenv("INSTALL_BENCH_PHASES")) {
+            c = cpu();
+            const InstallCheck ok = check_installable(grid);
+            row("  phase: grid checks", cpu() - c, ok.ok ? "ok (cpu)" : ok.message);
+            c = cpu();
+            const std::vector<LeafContext> contexts = leaf_contexts(grid, OutsideRoot::Coarse);
+            row("  phase: leaf contexts", cpu() - c, "(cpu)");
+        }
         t = now(), c = cpu();
         InstallResult r;
         try {

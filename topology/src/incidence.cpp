@@ -1,5 +1,7 @@
 #include "dualhex/topology/incidence.hpp"
 
+#include <limits>
+
 namespace dualhex {
 namespace {
 
@@ -8,62 +10,125 @@ using Row = std::uint32_t;
 // Per-row dedupe without hashing: `stamp[item]` remembers the last row that emitted it.
 template <class H>
 struct Stamper {
-    explicit Stamper(std::size_t n) : stamp(n, -1) {}
-    bool first(H item, std::int64_t row) {
-        if (stamp[item.index()] == row) return false;
-        stamp[item.index()] = row;
+    explicit Stamper(std::size_t n) : stamp(n, std::numeric_limits<std::uint32_t>::max()) {}
+    bool first(H item, std::size_t row) {
+        std::uint32_t& s = stamp[item.index()];
+        if (s == static_cast<std::uint32_t>(row)) return false;
+        s = static_cast<std::uint32_t>(row);
         return true;
     }
-    std::vector<std::int64_t> stamp;
+    std::vector<std::uint32_t> stamp;
 };
+
+// Rows of one relation are built from (row, item) pairs; each pair list lives only until
+// its CSR is built, so at most one is alive at a time (peak memory), and it is reserved to
+// an upper bound up front (untouched capacity costs no resident memory, regrowth copies do).
+template <class T>
+using Pairs = std::vector<std::pair<Row, T>>;
+
+// Appends (v, row) for the distinct items of a short list (first occurrence); long lists
+// go through the stamper.
+template <class H, class T>
+void distinct(std::span<const H> items, T row_item, std::size_t row, Stamper<H>& stamper, Pairs<T>& out) {
+    const std::size_t n = items.size();
+    if (n <= 16) {
+        for (std::size_t i = 0; i < n; ++i) {
+            bool seen = false;
+            for (std::size_t j = 0; j < i && !seen; ++j) seen = items[j] == items[i];
+            if (!seen) out.emplace_back(items[i].idx, row_item);
+        }
+        return;
+    }
+    for (H item : items)
+        if (stamper.first(item, row)) out.emplace_back(item.idx, row_item);
+}
 
 }  // namespace
 
 Incidence::Incidence(const CellComplex& k) : complex_(&k) {
     const std::size_t nv = k.n_vertices(), ne = k.n_edges(), nf = k.n_faces(), nc = k.n_cells();
+    const std::size_t n_loop = k.face_loops().size(), n_halffaces = k.all_cell_halffaces().size();
+    const auto& cell_offsets = k.cell_offsets();
+    const auto& halffaces = k.all_cell_halffaces();
 
-    std::vector<std::pair<Row, EdgeHandle>> ve;
-    ve.reserve(2 * ne);
-    for (std::size_t e = 0; e < ne; ++e) {
-        const auto [a, b] = k.edge_vertices(EdgeHandle(e));
-        ve.emplace_back(a.idx, EdgeHandle(e));
-        if (b != a) ve.emplace_back(b.idx, EdgeHandle(e));
-    }
-    vertex_edges_ = Csr<EdgeHandle>::from_pairs(nv, ve);
-
-    std::vector<std::pair<Row, FaceHandle>> vf, ef;
-    Stamper<VertexHandle> v_seen(nv);
-    Stamper<EdgeHandle> e_seen(ne);
-    for (std::size_t f = 0; f < nf; ++f) {
-        const FaceHandle fh(f);
-        for (VertexHandle v : k.face_vertices(fh))
-            if (v_seen.first(v, static_cast<std::int64_t>(f))) vf.emplace_back(v.idx, fh);
-        for (EdgeHandle e : k.face_edges(fh))
-            if (e_seen.first(e, static_cast<std::int64_t>(f))) ef.emplace_back(e.idx, fh);
-    }
-    vertex_faces_ = Csr<FaceHandle>::from_pairs(nv, vf);
-    edge_faces_ = Csr<FaceHandle>::from_pairs(ne, ef);
-
-    std::vector<std::pair<Row, CellHandle>> fc, vc, ec;
-    std::vector<std::pair<Row, HalfFaceHandle>> fh_pairs;
-    Stamper<VertexHandle> v_in_cell(nv);
-    Stamper<EdgeHandle> e_in_cell(ne);
-    for (std::size_t c = 0; c < nc; ++c) {
-        const CellHandle ch(c);
-        const auto row = static_cast<std::int64_t>(c);
-        for (HalfFaceHandle h : k.cell_halffaces(ch)) {
-            fc.emplace_back(h.face().idx, ch);
-            fh_pairs.emplace_back(h.face().idx, h);
-            for (VertexHandle v : k.face_vertices(h.face()))
-                if (v_in_cell.first(v, row)) vc.emplace_back(v.idx, ch);
-            for (EdgeHandle e : k.face_edges(h.face()))
-                if (e_in_cell.first(e, row)) ec.emplace_back(e.idx, ch);
+    {
+        Pairs<EdgeHandle> ve;
+        ve.reserve(2 * ne);
+        for (std::size_t e = 0; e < ne; ++e) {
+            const auto [a, b] = k.edge_vertices(EdgeHandle(e));
+            ve.emplace_back(a.idx, EdgeHandle(e));
+            if (b != a) ve.emplace_back(b.idx, EdgeHandle(e));
         }
+        vertex_edges_ = Csr<EdgeHandle>::from_pairs(nv, ve);
     }
-    face_cells_ = Csr<CellHandle>::from_pairs(nf, fc);
-    face_halffaces_ = Csr<HalfFaceHandle>::from_pairs(nf, fh_pairs);
-    vertex_cells_ = Csr<CellHandle>::from_pairs(nv, vc);
-    edge_cells_ = Csr<CellHandle>::from_pairs(ne, ec);
+    {
+        Pairs<FaceHandle> vf;
+        vf.reserve(n_loop);
+        Stamper<VertexHandle> seen(0);
+        for (std::size_t f = 0; f < nf; ++f) {
+            const FaceHandle fh(f);
+            const auto loop = k.face_vertices(fh);
+            if (loop.size() > 16 && seen.stamp.empty()) seen = Stamper<VertexHandle>(nv);
+            distinct(loop, fh, f, seen, vf);
+        }
+        vertex_faces_ = Csr<FaceHandle>::from_pairs(nv, vf);
+    }
+    {
+        Pairs<FaceHandle> ef;
+        ef.reserve(n_loop);
+        Stamper<EdgeHandle> seen(0);
+        for (std::size_t f = 0; f < nf; ++f) {
+            const FaceHandle fh(f);
+            const auto edges = k.face_edges(fh);
+            if (edges.size() > 16 && seen.stamp.empty()) seen = Stamper<EdgeHandle>(ne);
+            distinct(edges, fh, f, seen, ef);
+        }
+        edge_faces_ = Csr<FaceHandle>::from_pairs(ne, ef);
+    }
+    {
+        Pairs<CellHandle> fc;
+        fc.reserve(n_halffaces);
+        for (std::size_t c = 0; c < nc; ++c)
+            for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
+                fc.emplace_back(halffaces[i].face().idx, CellHandle(c));
+        face_cells_ = Csr<CellHandle>::from_pairs(nf, fc);
+    }
+    {
+        Pairs<HalfFaceHandle> fh_pairs;
+        fh_pairs.reserve(n_halffaces);
+        for (HalfFaceHandle h : halffaces) fh_pairs.emplace_back(h.face().idx, h);
+        face_halffaces_ = Csr<HalfFaceHandle>::from_pairs(nf, fh_pairs);
+    }
+    // Upper bound of the vertex (edge) references of all cells: the loop sizes of their faces.
+    std::size_t cell_refs = 0;
+    for (HalfFaceHandle h : halffaces) {
+        const auto& fo = k.face_offsets();
+        cell_refs += fo[h.face().index() + 1] - fo[h.face().index()];
+    }
+    {
+        Pairs<CellHandle> vc;
+        vc.reserve(cell_refs);
+        Stamper<VertexHandle> in_cell(nv);
+        for (std::size_t c = 0; c < nc; ++c) {
+            const CellHandle ch(c);
+            for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
+                for (VertexHandle v : k.face_vertices(halffaces[i].face()))
+                    if (in_cell.first(v, c)) vc.emplace_back(v.idx, ch);
+        }
+        vertex_cells_ = Csr<CellHandle>::from_pairs(nv, vc);
+    }
+    {
+        Pairs<CellHandle> ec;
+        ec.reserve(cell_refs);
+        Stamper<EdgeHandle> in_cell(ne);
+        for (std::size_t c = 0; c < nc; ++c) {
+            const CellHandle ch(c);
+            for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
+                for (EdgeHandle e : k.face_edges(halffaces[i].face()))
+                    if (in_cell.first(e, c)) ec.emplace_back(e.idx, ch);
+        }
+        edge_cells_ = Csr<CellHandle>::from_pairs(ne, ec);
+    }
 
     edge_boundary_.assign(ne, 0);
     vertex_boundary_.assign(nv, 0);
