@@ -4,11 +4,13 @@
 // PREFIX.poly.vtk (VTK_POLYHEDRON) and PREFIX.hex.vtk (VTK_HEXAHEDRON).
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "commands.hpp"
 
+#include "dualhex/checkers/certificate.hpp"
 #include "dualhex/checkers/install.hpp"
 #include "dualhex/checkers/library.hpp"
 #include "dualhex/geometry/complex_output.hpp"
@@ -24,7 +26,7 @@ namespace dualhex::app {
 namespace {
 
 struct InstallOptionsCli {
-    std::string input, prefix, outside = "coarse", balance = "weak";
+    std::string input, prefix, outside = "coarse", balance = "weak", certify;
     bool json = false, force = false;
 };
 
@@ -69,6 +71,7 @@ void run_install(const InstallOptionsCli& opt) {
     const std::string poly_path = opt.prefix + ".poly.vtk", hex_path = opt.prefix + ".hex.vtk";
     check_output(poly_path, opt.force);  // before any work
     check_output(hex_path, opt.force);
+    if (!opt.certify.empty()) check_output(opt.certify, opt.force);
     const OutsideRoot outside = opt.outside == "mirror" ? OutsideRoot::Mirror : OutsideRoot::Coarse;
 
     auto t0 = Clock::now();
@@ -121,6 +124,17 @@ void run_install(const InstallOptionsCli& opt) {
             mesh.hexes.push_back(q);
         }
         geometry::write_vtk_legacy(hex_path, mesh, true);
+    }
+    if (!opt.certify.empty()) {
+        // An installation certificate: the complex itself, explicitly, with its claims, for
+        // the independent checker (dualhex-proof-checker --file FILE).
+        CertificateSpec spec;
+        spec.name = "installation";
+        spec.kind = CertificateKind::Installation;
+        spec.domain = CertificateDomain::box({0, 0, 0}, {extent, extent, extent});
+        spec.comments = {"dualhex install " + opt.input + " (" + opt.balance + " rule, outside root " + opt.outside + ")"};
+        std::ofstream out = open_output(opt.certify, opt.force);
+        write_certificate(out, k, spec);
     }
     const double t_write = ms_since(t0);
 
@@ -181,6 +195,9 @@ void register_install(CLI::App& app) {
         ->check(CLI::IsMember({"weak", "strong"}));
     sub->add_option("-o,--output", opt->prefix, "Output prefix: writes PREFIX.poly.vtk and PREFIX.hex.vtk")->required();
     sub->add_flag("--force", opt->force, "Overwrite the output files if they exist");
+    sub->add_option("--certify", opt->certify,
+                    "Also write a certificate of the installed complex to FILE (check it with "
+                    "dualhex-proof-checker --file FILE)");
     sub->add_option("--outside-root", opt->outside, "Octant cubes outside the root: coarse (default) or mirror")
         ->check(CLI::IsMember({"coarse", "mirror"}));
     add_json_flag(*sub, opt->json);

@@ -3,8 +3,9 @@ dualhex_add_test(test_install_clipped_dual SOURCES test_install_clipped_dual.cpp
 
 # `dualhex install` as a process
 dualhex_add_test(test_install_cli SOURCES test_install_cli.cpp DEPS nlohmann_json::nlohmann_json)
-target_compile_definitions(test_install_cli PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
-add_dependencies(test_install_cli dualhex)
+target_compile_definitions(test_install_cli PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>"
+                                                   DUALHEX_PROOF_CHECKER="$<TARGET_FILE:dualhex-proof-checker>")
+add_dependencies(test_install_cli dualhex dualhex-proof-checker)
 
 # random grids through the whole pipeline (RapidCheck)
 dualhex_add_test(test_install_properties SOURCES test_install_properties.cpp DEPS dualhex::checkers)

@@ -116,8 +116,8 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    Result run(const std::vector<std::string>& args) const {
-        std::string cmd = quote(DUALHEX_EXE);
+    Result run(const std::vector<std::string>& args, const std::string& exe = DUALHEX_EXE) const {
+        std::string cmd = quote(exe);
         for (const auto& a : args) {
             cmd += ' ';
             cmd += quote(a);
@@ -214,6 +214,32 @@ TEST_F(InstallCli, WeaklyBalancedGridIsBadInputForTheStrongRule) {
     EXPECT_NE(r.err.find("not strongly balanced"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("(line "), std::string::npos) << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+// --certify writes the installed complex as a certificate that the independent checker
+// (proofs/checker, no dualhex code) verifies; a tampered copy is rejected.
+TEST_F(InstallCli, CertifiedInstallationIsVerifiedByTheIndependentChecker) {
+    const fs::path grid = fs::path(DUALHEX_SHARED_DATA) / "grids" / "sphere_weak_d5.leaves";
+    if (!fs::exists(grid)) GTEST_SKIP() << grid << " not found";
+    const fs::path cert = dir_ / "install.cert";
+    const Result r = run({"install", grid.string(), "-o", (dir_ / "c").string(), "--certify", cert.string()});
+    ASSERT_EQ(r.rc, 0) << r.err;
+    const Result ok = run({"--file", cert.string()}, DUALHEX_PROOF_CHECKER);
+    EXPECT_EQ(ok.rc, 0) << ok.out << ok.err;
+    EXPECT_NE(ok.out.find("VERIFIED"), std::string::npos) << ok.out;
+    // tamper: drop the last vertex id of the first face loop (the line after "faces N")
+    std::string text = slurp(cert);
+    const auto faces = text.find("\nfaces ");
+    ASSERT_NE(faces, std::string::npos);
+    const auto line = text.find('\n', faces + 1) + 1;
+    const auto end = text.find('\n', line);
+    const auto last_space = text.rfind(' ', end);
+    text.erase(last_space, end - last_space);
+    const fs::path bad = dir_ / "tampered.cert";
+    std::ofstream(bad) << text;
+    const Result rejected = run({"--file", bad.string()}, DUALHEX_PROOF_CHECKER);
+    EXPECT_NE(rejected.rc, 0) << rejected.out;
+    EXPECT_EQ(rejected.out.find("VERIFIED"), std::string::npos) << rejected.out;
 }
 
 TEST_F(InstallCli, MalformedLeafFileIsInputError) {
