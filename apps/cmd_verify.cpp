@@ -3,9 +3,13 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <filesystem>
 #include <memory>
 
 #include "commands.hpp"
+#include "dualhex/checkers/certificate.hpp"
+#include "dualhex/schemes/element_library.hpp"
+#include "dualhex/schemes/signature_rule.hpp"
 #include "verify_checks.hpp"
 
 namespace dualhex::app {
@@ -14,6 +18,8 @@ namespace {
 struct VerifyOptions {
     bool json = false;
     bool list = false;
+    bool force = false;
+    std::string certify;  ///< directory for certificates ("" = none)
     std::vector<std::string> only;
 };
 
@@ -46,6 +52,7 @@ void run_verify(const VerifyOptions& opt) {
         return;
     }
 
+    if (!opt.certify.empty()) check_output(std::filesystem::path(opt.certify) / "manifest", opt.force);
     const auto t_all = std::chrono::steady_clock::now();
     nlohmann::json checks = nlohmann::json::array();
     int passed = 0, failed = 0, skipped = 0;
@@ -107,6 +114,15 @@ void run_verify(const VerifyOptions& opt) {
                     total);
     }
     if (!ok) throw Exit{kCheckFailed};
+    if (!opt.certify.empty()) {
+        // The checks passed: write what they established as certificates (elements and the
+        // 256 strong configurations) for the independent checker.
+        const CertifyResult result =
+            certify_library(ElementLibrary::load_default(), StrongRule(), std::filesystem::path(opt.certify));
+        if (!opt.json)
+            std::printf("certified: %zu certificates in %s (dualhex-proof-checker %s/manifest)\n", result.certificates,
+                        opt.certify.c_str(), opt.certify.c_str());
+    }
 }
 
 }  // namespace
@@ -117,6 +133,9 @@ void register_verify(CLI::App& app) {
     add_json_flag(*sub, opt->json);
     sub->add_flag("--list", opt->list, "List the checks instead of running them");
     sub->add_option("--only", opt->only, "Run only checks whose name contains this text (repeatable)");
+    sub->add_option("--certify", opt->certify,
+                    "After a passing run, write certificates (elements, the 256 strong configurations) into DIR");
+    sub->add_flag("--force", opt->force, "With --certify: overwrite an existing manifest in DIR");
     sub->callback([opt] { run_verify(*opt); });
 }
 
