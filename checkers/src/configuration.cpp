@@ -302,9 +302,10 @@ ConfigurationReport check_periodic_levels(const std::function<int(int, int, int)
                  [](const LatticePoint&) { return true; }, [](const CellComplex&, std::span<const VertexHandle>) { return false; });
 }
 
-ConfigurationReport check_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
-                                        const ElementLibrary& library) {
-    const std::int64_t half = 4 * detail::common_unit(library);  // the window is [-4U, 4U]^3
+// The window [-half, half]^3: vertices strictly inside get the interior checks; a boundary
+// face is expected iff all its points lie in one plane of the window's surface.
+template <class Build>
+ConfigurationReport check_window(std::uint8_t mask, std::int64_t half, Build&& build) {
     const auto inside = [half](const LatticePoint& p) {
         return -half < p.x && p.x < half && -half < p.y && p.y < half && -half < p.z && p.z < half;
     };
@@ -317,25 +318,17 @@ ConfigurationReport check_window_levels(const std::array<int, 8>& levels, const 
             }
         return false;
     };
-    return check(0, [&] { return build_window_levels(levels, rule, library); }, inside, on_surface);
+    return check(mask, build, inside, on_surface);
+}
+
+ConfigurationReport check_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
+                                        const ElementLibrary& library) {
+    // two octant cubes of 4U: the window is [-4U, 4U]^3
+    return check_window(0, 4 * detail::common_unit(library), [&] { return build_window_levels(levels, rule, library); });
 }
 
 ConfigurationReport check_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {
-    const std::int64_t half = 2 * detail::common_unit(library);
-    const auto inside = [half](const LatticePoint& p) {
-        return -half < p.x && p.x < half && -half < p.y && p.y < half && -half < p.z && p.z < half;
-    };
-    // A boundary face is expected iff all its points lie in one plane of the cube's surface.
-    const auto on_surface = [half](const CellComplex& cx, std::span<const VertexHandle> loop) {
-        for (int a = 0; a < 3; ++a)
-            for (std::int64_t side : {-half, half}) {
-                bool all = true;
-                for (VertexHandle v : loop) all = all && cx.position(v)[a] == side;
-                if (all) return true;
-            }
-        return false;
-    };
-    return check(mask, [&] { return build_cube_window(mask, rule, library); }, inside, on_surface);
+    return check_window(mask, 2 * detail::common_unit(library), [&] { return build_cube_window(mask, rule, library); });
 }
 
 }  // namespace dualhex
