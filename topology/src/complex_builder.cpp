@@ -16,7 +16,9 @@ void ComplexBuilder::reserve(std::size_t n_vertices, std::size_t n_faces, std::s
     vertex_table_.reserve(n_vertices);
     face_offsets_.reserve(n_faces + 1);
     face_loops_.reserve(4 * n_faces);
-    face_table_.reserve(n_faces);
+    face_table_.reserve(n_vertices, [&](std::int32_t f) {
+        return face_loops_[face_offsets_[static_cast<std::size_t>(f)]].index();
+    });
     cell_offsets_.reserve(n_cells + 1);
     cell_halffaces_.reserve(6 * n_cells);
 }
@@ -39,42 +41,64 @@ VertexHandle ComplexBuilder::find_vertex(const LatticePoint& p) const {
 
 HalfFaceHandle ComplexBuilder::add_face(std::span<const VertexHandle> loop) {
     if (loop.empty()) throw std::invalid_argument("ComplexBuilder::add_face: empty loop");
+    const std::size_t nv = positions_.size();
     for (VertexHandle v : loop)
-        if (!v.valid() || v.index() >= positions_.size())
+        if (!v.valid() || v.index() >= nv)
             throw std::invalid_argument("ComplexBuilder::add_face: unknown vertex " + std::to_string(v.idx));
 
     // Both walks of the loop from its smallest vertex; the canonical one (hashed) heads
     // towards the smaller neighbour, so all rotations and both directions hash alike.
     const std::size_t n = loop.size();
-    const auto start = static_cast<std::size_t>(std::min_element(loop.begin(), loop.end()) - loop.begin());
-    forward_.resize(n);
-    backward_.resize(n);
-    for (std::size_t k = 0, i = start, j = start; k < n; ++k) {
-        forward_[k] = loop[i];
-        backward_[k] = loop[j];
-        i = i + 1 == n ? 0 : i + 1;
-        j = j == 0 ? n - 1 : j - 1;
-    }
-    const std::vector<VertexHandle>& canon = n < 3 || forward_[1] <= backward_[1] ? forward_ : backward_;
+    std::size_t start = 0;
+    for (std::size_t i = 1; i < n; ++i)
+        if (loop[i] < loop[start]) start = i;
+    const VertexHandle* const data = loop.data();
+    // k-th vertex of the forward (given direction) / backward walk from `start`.
+    const auto fwd = [&](std::size_t k) { const std::size_t i = start + k; return data[i >= n ? i - n : i]; };
+    const auto bwd = [&](std::size_t k) { return data[k <= start ? start - k : start + n - k]; };
+    const bool canon_forward = n < 3 || fwd(1) <= bwd(1);
     std::uint64_t hash = detail::mix64(n);
-    for (VertexHandle v : canon) hash = detail::mix64(hash ^ static_cast<std::uint64_t>(v.idx));
+    if (canon_forward)
+        for (std::size_t k = 0; k < n; ++k) hash = detail::mix64(hash ^ static_cast<std::uint64_t>(fwd(k).idx));
+    else
+        for (std::size_t k = 0; k < n; ++k) hash = detail::mix64(hash ^ static_cast<std::uint64_t>(bwd(k).idx));
 
     // The stored loop is the given one rotated to start at its smallest vertex; a later
     // equal loop matches it walking forward (side 0) or backward (side 1).
-    auto matches = [&](std::int32_t face, const std::vector<VertexHandle>& walk) {
+    const auto stored = [&](std::int32_t face, std::size_t& size) {
         const std::uint32_t begin = face_offsets_[static_cast<std::size_t>(face)];
-        return face_offsets_[static_cast<std::size_t>(face) + 1] - begin == n &&
-               std::equal(walk.begin(), walk.end(), face_loops_.begin() + begin);
+        size = face_offsets_[static_cast<std::size_t>(face) + 1] - begin;
+        return face_loops_.data() + begin;
+    };
+    const auto matches_forward = [&](std::int32_t face) {
+        std::size_t size = 0;
+        const VertexHandle* s = stored(face, size);
+        if (size != n) return false;
+        for (std::size_t k = 0; k < n; ++k)
+            if (s[k] != fwd(k)) return false;
+        return true;
+    };
+    const auto matches_backward = [&](std::int32_t face) {
+        std::size_t size = 0;
+        const VertexHandle* s = stored(face, size);
+        if (size != n) return false;
+        for (std::size_t k = 0; k < n; ++k)
+            if (s[k] != bwd(k)) return false;
+        return true;
+    };
+    const auto first_vertex = [&](std::int32_t face) {
+        return face_loops_[face_offsets_[static_cast<std::size_t>(face)]].index();
     };
     const auto id = static_cast<std::int32_t>(n_faces());
     const auto [found, inserted] =
-        face_table_.insert(hash, id, [&](std::int32_t f) { return matches(f, forward_) || matches(f, backward_); });
+        face_table_.insert(data[start].index(), static_cast<std::uint32_t>(hash >> 32), id,
+                           [&](std::int32_t f) { return matches_forward(f) || matches_backward(f); }, first_vertex);
     if (inserted) {
-        face_loops_.insert(face_loops_.end(), forward_.begin(), forward_.end());
+        for (std::size_t k = 0; k < n; ++k) face_loops_.push_back(fwd(k));
         face_offsets_.push_back(static_cast<std::uint32_t>(face_loops_.size()));
         return HalfFaceHandle(FaceHandle(found), 0);
     }
-    return HalfFaceHandle(FaceHandle(found), matches(found, forward_) ? 0 : 1);
+    return HalfFaceHandle(FaceHandle(found), matches_forward(found) ? 0 : 1);
 }
 
 CellHandle ComplexBuilder::add_cell(std::span<const HalfFaceHandle> halffaces) {

@@ -65,8 +65,9 @@ private:
     };
     static constexpr std::size_t kVertexCacheSize = 4096;
     std::vector<CachedVertex> vertex_cache_ = std::vector<CachedVertex>(kVertexCacheSize);
-    detail::IdHashTable face_table_;
-    std::vector<VertexHandle> scratch_, forward_, backward_;
+    // Faces keyed by their smallest vertex (the first of the stored loop), see LocalIdTable.
+    detail::LocalIdTable face_table_;
+    std::vector<VertexHandle> scratch_;
     std::vector<HalfFaceHandle> cell_scratch_;
 };
 
