@@ -124,6 +124,39 @@ TEST_F(Cli, VerifyJsonListsChecksAndPasses) {
         if (c.at("name") == "symmetry.group") saw_symmetry = c.at("status") == "PASS";
     }
     EXPECT_TRUE(saw_symmetry) << r.out;
+    // the issues' summary blocks, with computed numbers
+    const auto& strong = j.at("strong");
+    EXPECT_EQ(strong.at("configurations").get<int>(), 256);
+    EXPECT_EQ(strong.at("passed").get<int>(), 256);
+    EXPECT_EQ(strong.at("classes").get<int>(), 20);
+    EXPECT_EQ(strong.at("max_dual_edge_valence").get<int>(), 6);
+    EXPECT_EQ(strong.at("elements").size(), 8u);
+    EXPECT_EQ(strong.at("elements").at("F").at("F3").get<int>(), 5);
+    const auto& weak = j.at("weak");
+    EXPECT_EQ(weak.at("configurations").get<int>(), 487);
+    EXPECT_EQ(weak.at("passed").get<int>(), 487);
+    EXPECT_EQ(weak.at("classes").get<int>(), 14);
+    EXPECT_EQ(weak.at("max_dual_edge_valence").get<int>(), 7);
+    EXPECT_EQ(weak.at("elements").size(), 5u);
+}
+
+TEST_F(Cli, TableShowsTheTwentyTransitions) {
+    const Result r = run({"table", "--json"});
+    ASSERT_EQ(r.rc, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("transitions").get<int>(), 20);
+    ASSERT_EQ(j.at("classes").size(), 20u);
+    int coarse_leaves = 0;
+    for (const auto& c : j.at("classes")) {
+        // one entry per coarse octant around the application point
+        EXPECT_EQ(static_cast<int>(c.at("leaves").size()), 8 - c.at("fine_octants").get<int>());
+        coarse_leaves += static_cast<int>(c.at("leaves").size());
+    }
+    EXPECT_GT(coarse_leaves, 0);
+    // the periodic embedding uses every strong element but VS (which needs the reach)
+    const auto& use = j.at("element_use");
+    for (const char* e : {"F", "F+C", "C1", "C2", "C3", "E", "VC"}) EXPECT_TRUE(use.contains(e)) << e;
+    EXPECT_FALSE(use.contains("VS"));
 }
 
 TEST_F(Cli, VerifyOnlyAndList) {
