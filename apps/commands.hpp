@@ -44,6 +44,7 @@ void register_table(CLI::App& app);
 void register_install(CLI::App& app);
 void register_certify(CLI::App& app);
 void register_variants(CLI::App& app);
+void register_mesh(CLI::App& app);
 
 // --- shared helpers (commands.cpp) ---
 

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     register_install(app);
     register_certify(app);
     register_variants(app);
+    register_mesh(app);
 
     try {
         app.parse(argc, argv);  // subcommand callbacks run in here
