@@ -1,0 +1,116 @@
+// `dualhex mesh` run as a process (DUALHEX_EXE): the default shape meshes and reports
+// the --json keys, an existing output is refused without --force (exit 2), a bad or
+// missing surface exits 3 naming the file, an unknown output extension exits 2.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int rc = -1;
+    std::string out, err;
+};
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+class MeshCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("dualhex_mesh_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    Result run(const std::vector<std::string>& args) const {
+        std::string cmd = quote(DUALHEX_EXE);
+        for (const auto& a : args) cmd += ' ' + quote(a);
+        cmd += " >" + quote((dir_ / "stdout").string()) + " 2>" + quote((dir_ / "stderr").string()) + " </dev/null";
+        const int status = std::system(cmd.c_str());
+        Result r;
+        r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        r.out = slurp(dir_ / "stdout");
+        r.err = slurp(dir_ / "stderr");
+        return r;
+    }
+    fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(MeshCli, DefaultShapeJsonReport) {
+    const std::string out = (dir_ / "torus.vtk").string();
+    const Result r = run({"mesh", "-o", out, "--max-depth", "4", "--json"});
+    ASSERT_EQ(r.rc, 0) << r.out << r.err;
+    EXPECT_TRUE(r.err.empty()) << r.err;  // quiet: not a terminal
+    const auto j = nlohmann::json::parse(r.out);
+    for (const char* key : {"input", "leaves", "cells", "hexes", "vertices", "scaled_jacobian", "singular_edge_valences",
+                            "hausdorff", "ms"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    for (const char* key : {"min", "mean", "below_0", "below_0_2"}) EXPECT_TRUE(j.at("scaled_jacobian").contains(key)) << key;
+    for (const char* key : {"octree", "balance_pair", "install", "dual", "extract", "project", "smooth", "write"})
+        EXPECT_TRUE(j.at("ms").contains(key)) << key;
+    EXPECT_GT(j.at("hexes").get<int>(), 0);
+    EXPECT_GT(j.at("scaled_jacobian").at("min").get<double>(), 0.0);
+    EXPECT_TRUE(fs::exists(out));
+
+    // Exists: refused without --force (exit 2), file untouched; --force replaces it.
+    const auto size = fs::file_size(out);
+    const Result again = run({"mesh", "-o", out, "--max-depth", "3"});
+    EXPECT_EQ(again.rc, 2) << again.err;
+    EXPECT_NE(again.err.find(out), std::string::npos) << again.err;
+    EXPECT_EQ(fs::file_size(out), size);
+    const Result forced = run({"mesh", "-o", out, "--max-depth", "3", "--force"});
+    EXPECT_EQ(forced.rc, 0) << forced.err;
+    EXPECT_NE(forced.out.find("scaled Jacobian"), std::string::npos) << forced.out;
+}
+
+TEST_F(MeshCli, BadInputExits3NamingTheFile) {
+    const fs::path missing = dir_ / "missing.off";
+    Result r = run({"mesh", missing.string(), "-o", (dir_ / "a.vtk").string()});
+    EXPECT_EQ(r.rc, 3) << r.err;
+    EXPECT_NE(r.err.find(missing.string()), std::string::npos) << r.err;
+
+    const fs::path open = dir_ / "open.off";  // a cube with one face missing: not closed
+    std::ofstream(open) << "OFF\n8 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                           "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n";
+    r = run({"mesh", open.string(), "-o", (dir_ / "b.vtk").string()});
+    EXPECT_EQ(r.rc, 3) << r.err;
+    EXPECT_NE(r.err.find(open.string()), std::string::npos) << r.err;
+
+    const fs::path garbage = dir_ / "garbage.off";
+    std::ofstream(garbage) << "this is not an OFF file\n";
+    r = run({"mesh", garbage.string(), "-o", (dir_ / "c.vtk").string()});
+    EXPECT_EQ(r.rc, 3) << r.err;
+    EXPECT_NE(r.err.find(garbage.string()), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "a.vtk") || fs::exists(dir_ / "b.vtk") || fs::exists(dir_ / "c.vtk"));
+}
+
+TEST_F(MeshCli, UnknownOutputFormatIsAUsageError) {
+    const Result r = run({"mesh", "-o", (dir_ / "x.stl").string()});
+    EXPECT_EQ(r.rc, 2) << r.err;
+}
