@@ -79,6 +79,15 @@ public:
         out.box_max = hi_;
         const std::size_t nv = k_.n_vertices(), ne = k_.n_edges(), nf = k_.n_faces(), nc = k_.n_cells();
 
+        // Room for every dual vertex up front (no regrowth copies): cells, then boundary
+        // faces, crease edges (at most the boundary edges) and corners.
+        std::size_t n_boundary = 0;
+        for (std::size_t f = 0; f < nf; ++f) n_boundary += inc_.is_boundary(FaceHandle(f)) ? 1 : 0;
+        const std::size_t n_points = nc + 3 * n_boundary + 8;
+        out.points.reserve(n_points);
+        out.kind.reserve(n_points);
+        out.primal.reserve(n_points);
+
         // Dual vertices of cells: centroid of the distinct vertices.
         out.points.assign(nc, RationalPoint{{0, 0, 0}, 0});
         for (std::size_t v = 0; v < nv; ++v) {

@@ -1,5 +1,6 @@
 #include "dualhex/topology/incidence.hpp"
 
+#include <algorithm>
 #include <limits>
 
 namespace dualhex {
@@ -20,9 +21,10 @@ struct Stamper {
     std::vector<std::uint32_t> stamp;
 };
 
-// Rows of one relation are built from (row, item) pairs; each pair list lives only until
-// its CSR is built, so at most one is alive at a time (peak memory), and it is reserved to
-// an upper bound up front (untouched capacity costs no resident memory, regrowth copies do).
+// Rows of one relation are built from (row, item) pairs. One pair buffer per item type is
+// reused from relation to relation (cleared, its pages stay mapped: no fresh page faults),
+// reserved to an upper bound up front (untouched capacity costs no resident memory,
+// regrowth copies do).
 template <class T>
 using Pairs = std::vector<std::pair<Row, T>>;
 
@@ -61,9 +63,9 @@ Incidence::Incidence(const CellComplex& k) : complex_(&k) {
         }
         vertex_edges_ = Csr<EdgeHandle>::from_pairs(nv, ve);
     }
+    Pairs<FaceHandle> vf;  // then edge -> faces
+    vf.reserve(n_loop);
     {
-        Pairs<FaceHandle> vf;
-        vf.reserve(n_loop);
         Stamper<VertexHandle> seen(0);
         for (std::size_t f = 0; f < nf; ++f) {
             const FaceHandle fh(f);
@@ -74,8 +76,8 @@ Incidence::Incidence(const CellComplex& k) : complex_(&k) {
         vertex_faces_ = Csr<FaceHandle>::from_pairs(nv, vf);
     }
     {
-        Pairs<FaceHandle> ef;
-        ef.reserve(n_loop);
+        Pairs<FaceHandle>& ef = vf;
+        ef.clear();
         Stamper<EdgeHandle> seen(0);
         for (std::size_t f = 0; f < nf; ++f) {
             const FaceHandle fh(f);
@@ -85,9 +87,16 @@ Incidence::Incidence(const CellComplex& k) : complex_(&k) {
         }
         edge_faces_ = Csr<FaceHandle>::from_pairs(ne, ef);
     }
+    Pairs<FaceHandle>().swap(vf);
+    // Upper bound of the vertex (edge) references of all cells: the loop sizes of their faces.
+    std::size_t cell_refs = 0;
+    for (HalfFaceHandle h : halffaces) {
+        const auto& fo = k.face_offsets();
+        cell_refs += fo[h.face().index() + 1] - fo[h.face().index()];
+    }
+    Pairs<CellHandle> fc;  // then vertex -> cells, edge -> cells
+    fc.reserve(std::max(n_halffaces, cell_refs));
     {
-        Pairs<CellHandle> fc;
-        fc.reserve(n_halffaces);
         for (std::size_t c = 0; c < nc; ++c)
             for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
                 fc.emplace_back(halffaces[i].face().idx, CellHandle(c));
@@ -99,15 +108,9 @@ Incidence::Incidence(const CellComplex& k) : complex_(&k) {
         for (HalfFaceHandle h : halffaces) fh_pairs.emplace_back(h.face().idx, h);
         face_halffaces_ = Csr<HalfFaceHandle>::from_pairs(nf, fh_pairs);
     }
-    // Upper bound of the vertex (edge) references of all cells: the loop sizes of their faces.
-    std::size_t cell_refs = 0;
-    for (HalfFaceHandle h : halffaces) {
-        const auto& fo = k.face_offsets();
-        cell_refs += fo[h.face().index() + 1] - fo[h.face().index()];
-    }
     {
-        Pairs<CellHandle> vc;
-        vc.reserve(cell_refs);
+        Pairs<CellHandle>& vc = fc;
+        vc.clear();
         Stamper<VertexHandle> in_cell(nv);
         for (std::size_t c = 0; c < nc; ++c) {
             const CellHandle ch(c);
@@ -118,8 +121,8 @@ Incidence::Incidence(const CellComplex& k) : complex_(&k) {
         vertex_cells_ = Csr<CellHandle>::from_pairs(nv, vc);
     }
     {
-        Pairs<CellHandle> ec;
-        ec.reserve(cell_refs);
+        Pairs<CellHandle>& ec = fc;
+        ec.clear();
         Stamper<EdgeHandle> in_cell(ne);
         for (std::size_t c = 0; c < nc; ++c) {
             const CellHandle ch(c);
@@ -129,6 +132,7 @@ Incidence::Incidence(const CellComplex& k) : complex_(&k) {
         }
         edge_cells_ = Csr<CellHandle>::from_pairs(ne, ec);
     }
+    Pairs<CellHandle>().swap(fc);
 
     edge_boundary_.assign(ne, 0);
     vertex_boundary_.assign(nv, 0);
