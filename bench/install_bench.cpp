@@ -1,7 +1,9 @@
 // install_bench: times element installation (checkers/install.hpp) and the checks after it.
 //
-//   install_bench [--elements DIR] [--grid FILE ...] [--verify] [base levels ...]
+//   install_bench [--elements DIR] [--grid FILE ...] [--flat BASE ...] [--verify] [base levels ...]
 //                                                  (default: flat 4 5, then the sphere grids)
+// --flat BASE puts the generated flat grid of levels BASE/BASE+1 (9 * 8^BASE / 2 leaves:
+// 1.18M for 6, 9.4M for 7) through the strong-rule table instead of a leaf file.
 //
 // Flat grids: root refined to level `base`, the half y < 1/2 to base + 1 (paired, strongly
 // balanced, flat transitions only), installed with FlatOnlyRule (outside-root cubes
@@ -80,6 +82,7 @@ int main(int argc, char** argv) {
     std::filesystem::path elements;
     std::vector<int> bases;
     std::vector<std::filesystem::path> grids;
+    std::vector<int> strong_flat;  // --flat BASE: generated flat grid through the strong-rule table
     bool verify = false;
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
@@ -87,13 +90,15 @@ int main(int argc, char** argv) {
             elements = argv[++a];
         } else if (arg == "--grid" && a + 1 < argc) {
             grids.emplace_back(argv[++a]);
+        } else if (arg == "--flat" && a + 1 < argc) {
+            strong_flat.push_back(std::atoi(argv[++a]));
         } else if (arg == "--verify") {
             verify = true;
         } else {
             bases.push_back(std::atoi(arg.c_str()));
         }
     }
-    if (bases.empty() && grids.empty()) bases = {4, 5};
+    if (bases.empty() && grids.empty() && strong_flat.empty()) bases = {4, 5};
     std::shared_ptr<const ElementLibrary> library;
     try {
         library = elements.empty() ? load_default_element_library() : load_element_library(elements);
@@ -143,14 +148,17 @@ int main(int argc, char** argv) {
     // phases each: install (incl. grid checks), Incidence + clipped dual, and the per-leaf
     // cost. Wall and CPU seconds (the machine's cores are shared).
     std::vector<std::filesystem::path> files = grids;
-    if (files.empty())
+    for (int base : strong_flat) files.emplace_back("flat:" + std::to_string(base));
+    if (files.empty() && strong_flat.empty())
         for (int d : {5, 6, 7})
             files.push_back(std::filesystem::path(DUALHEX_SHARED_DATA) / "grids" / ("sphere_strong_d" + std::to_string(d) + ".leaves"));
     const StrongRule strong;
     for (const auto& file : files) {
-        if (!std::filesystem::exists(file)) continue;
+        const std::string name = file.string();
+        const bool generated = name.rfind("flat:", 0) == 0;
+        if (!generated && !std::filesystem::exists(file)) continue;
         double t = now(), c = cpu();
-        const LeafGrid grid = read_leaf_file(file);
+        const LeafGrid grid = generated ? flat_grid(std::atoi(name.c_str() + 5)) : read_leaf_file(file);
         std::printf("%s: %zu leaves (strong rule)\n", file.filename().c_str(), grid.size());
         row("read", now() - t, "cpu " + fmt(cpu() - c));
         if (std::getenv("INSTALL_BENCH_PHASES")) {
