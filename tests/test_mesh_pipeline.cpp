@@ -98,7 +98,7 @@ TEST(MeshPipeline, GaoBunnyAllHex) {
     EXPECT_GT(r.mesh.hexes.size(), 500u);
     EXPECT_GT(r.leaves, 1000u);
     EXPECT_GT(r.dual_hexes, r.mesh.hexes.size());
-    EXPECT_LE(r.quality.share_negative, 0.01);
+    EXPECT_GT(r.quality.min, 0.0);  // untangling pulls back every hex below 0.05 when it can
     // A transition grid: the kept mesh has singular interior edges, all of valence 3..7.
     EXPECT_FALSE(r.singular_edge_valences.empty());
     for (const auto& [valence, count] : r.singular_edge_valences) {

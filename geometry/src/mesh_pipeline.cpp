@@ -241,25 +241,34 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     // unprojected positions
     stage("untangle");
     t0 = Clock::now();
-    for (int round = 0; round < options.untangle_rounds && inverted > 0; ++round) {
+    auto count_bad = [&](const std::vector<double>& values) {
+        return static_cast<std::size_t>(std::count_if(values.begin(), values.end(), [&](double q) {
+            return !(q > 0) || q < options.untangle_below;
+        }));
+    };
+    std::size_t bad = count_bad(sj);
+    for (int round = 0; round < options.untangle_rounds && bad > 0; ++round) {
         std::vector<char> move(mesh.points.size(), 0);
         for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-            if (!(sj[h] > 0))
+            if (!(sj[h] > 0) || sj[h] < options.untangle_below)
                 for (int v : mesh.hexes[h]) move[static_cast<std::size_t>(v)] = 1;
         const std::vector<Eigen::Vector3d> before = mesh.points;
+        std::size_t moved = 0;
         for (std::size_t v = 0; v < mesh.points.size(); ++v)
             if (move[v]) {
                 mesh.points[v] = unprojected[v] + 0.5 * (mesh.points[v] - unprojected[v]);
-                ++result.untangled_vertices;
+                ++moved;
             }
         std::vector<double> sj_next = scaled_jacobians(mesh);
-        const std::size_t inverted_next = count_inverted_in(sj_next);
-        if (inverted_next > inverted) {
+        const std::size_t inverted_next = count_inverted_in(sj_next), bad_next = count_bad(sj_next);
+        if (inverted_next > inverted || (inverted_next == inverted && bad_next > bad)) {
             mesh.points = before;
             break;
         }
+        result.untangled_vertices += moved;
         sj = std::move(sj_next);
         inverted = inverted_next;
+        bad = bad_next;
     }
     result.ms.untangle = ms_since(t0);
 

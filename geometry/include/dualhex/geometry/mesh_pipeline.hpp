@@ -13,11 +13,12 @@
 //           --> smoothing: Laplacian (mean of edge neighbours) of the interior vertices,
 //               an iteration is rejected (and smoothing stops) if it increases the number
 //               of inverted hexes (scaled Jacobian <= 0)
-//           --> untangling: the vertices of hexes still inverted are moved back half-way
-//               towards their embedded dual positions (before projection and smoothing),
-//               up to `untangle_rounds` times, a round being rejected if it increases the
-//               number of inverted hexes (trades surface distance for validity; counted
-//               in `untangled_vertices`)
+//           --> untangling: the vertices of hexes still inverted or with scaled Jacobian
+//               < untangle_below are moved back half-way towards their embedded dual
+//               positions (before projection and smoothing), up to `untangle_rounds`
+//               times; a round is rejected (and untangling stops) if it increases the
+//               number of inverted hexes, or keeps it and increases the number below the
+//               threshold (trades surface distance for quality; `untangled_vertices`)
 //           --> report: quality, interior singular edges, one-sided surface distance.
 //
 // Writing the file is the caller's job (write_hex_mesh); MeshTimes::write is left 0.
@@ -42,6 +43,7 @@ struct MeshPipelineOptions {
     int max_depth = 6;
     int smooth_iterations = 5;
     int untangle_rounds = 10;
+    double untangle_below = 0.05;
     /// Called with a short stage name ("octree", "pair", ...) before each stage (may be empty).
     std::function<void(const std::string&)> progress;
 };
