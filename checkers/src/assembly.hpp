@@ -68,6 +68,30 @@ private:
 /// the leaf out of its local box [0,1]^3 (only the 6 axis permutations keep it).
 void check_placement_symmetry(const Placement& placement);
 
+/// Adds the template's cells over `vertices` (vertices[n] is the template's point n).
+inline void emit_cells(ComplexBuilder& builder, const ElementTemplate& t, std::span<const VertexHandle> vertices,
+                       std::vector<VertexHandle>& loop, std::vector<HalfFaceHandle>& halffaces) {
+    for (std::size_t c = 0; c + 1 < t.cell_offsets.size(); ++c) {
+        halffaces.clear();
+        for (std::uint32_t f = t.cell_offsets[c]; f < t.cell_offsets[c + 1]; ++f) {
+            loop.clear();
+            for (std::uint32_t q = t.face_offsets[f]; q < t.face_offsets[f + 1]; ++q) loop.push_back(vertices[t.face_points[q]]);
+            halffaces.push_back(builder.add_face(loop));
+        }
+        builder.add_cell(halffaces);
+    }
+}
+
+/// Adds the template at `translation + scale * p`, each point welded by `weld(point)`.
+template <class Weld>
+void emit_welded(ComplexBuilder& builder, const ElementTemplate& t, const LatticePoint& translation,
+                 std::int64_t scale, Weld&& weld, std::vector<VertexHandle>& vertices, std::vector<VertexHandle>& loop,
+                 std::vector<HalfFaceHandle>& halffaces) {
+    vertices.resize(t.points.size());
+    for (std::size_t n = 0; n < t.points.size(); ++n) vertices[n] = weld(translation + t.points[n] * scale);
+    emit_cells(builder, t, vertices, loop, halffaces);
+}
+
 /// Adds the template at `translation + scale * p` (each point then passed through `wrap`).
 template <class Wrap>
 void emit(ComplexBuilder& builder, const ElementTemplate& t, const LatticePoint& translation, std::int64_t scale,

@@ -26,6 +26,13 @@ public:
 
     /// The vertex at `p`, created if new.
     VertexHandle add_vertex(const LatticePoint& p);
+    /// A new vertex at `p`, NOT welded: no lookup, and add_vertex / find_vertex will never
+    /// see it. For callers that weld a set of points themselves (e.g. by an array index of
+    /// grid corners) and guarantee that no point of that set ever reaches add_vertex.
+    VertexHandle add_vertex_unwelded(const LatticePoint& p) {
+        positions_.push_back(p);
+        return VertexHandle(positions_.size() - 1);
+    }
     /// The vertex at `p`, or an invalid handle.
     [[nodiscard]] VertexHandle find_vertex(const LatticePoint& p) const;
 
