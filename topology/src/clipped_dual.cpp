@@ -183,6 +183,7 @@ private:
 
     // The dual face loops of v's clipped dual cell, into faces_.
     void collect(VertexHandle v) {
+        gather_around(v);
         for (EdgeHandle e : inc_.vertex_edges(v)) {
             if (!faces_.open()) return faces_.fail("more than 6 dual faces");
             edge_face(v, e);
@@ -194,6 +195,40 @@ private:
             cap_face(v, bit);
         }
         if (faces_.overflow) faces_.fail("a dual face with too many vertices");
+    }
+
+    // The faces at v, read once for all of v's interior edges (instead of once per edge
+    // through edge_faces and a loop scan each): v's neighbours in each loop, the cells and
+    // the sides they use. Valid (around_ok_) when v occurs exactly once in every loop of
+    // its faces: then the faces of the edge (v, w) are exactly those with w before or after
+    // v, in the same (ascending) order as edge_faces, and the face walks v -> w iff w is
+    // after v. Otherwise edge_face takes the general path.
+    void gather_around(VertexHandle v) {
+        const auto faces = inc_.vertex_faces(v);
+        around_ok_ = faces.size() <= around_.size();
+        if (!around_ok_) return;
+        n_around_ = 0;
+        for (FaceHandle f : faces) {
+            const auto loop = k_.face_vertices(f);
+            const std::size_t n = loop.size();
+            std::size_t at = n, count = 0;
+            for (std::size_t i = 0; i < n; ++i)
+                if (loop[i] == v) at = i, ++count;
+            if (count != 1) {
+                around_ok_ = false;
+                return;
+            }
+            Around& a = around_[n_around_++];
+            a.prev = loop[at == 0 ? n - 1 : at - 1];
+            a.next = loop[at + 1 == n ? 0 : at + 1];
+            const auto cells = inc_.face_cells(f);
+            a.two_cells = cells.size() == 2;
+            if (a.two_cells) {
+                const auto hfs = inc_.face_halffaces(f);
+                a.cells = {cells[0], cells[1]};
+                a.side0 = {hfs[0].side() == 0, hfs[1].side() == 0};
+            }
+        }
     }
 
     // The face through which cell c leaves, turning counter-clockwise about v -> w
@@ -217,10 +252,26 @@ private:
         if (!inc_.is_boundary(e)) {
             // Each face at e joins the cell walking it v -> w (leaving, counter-clockwise)
             // to the other one: one loop scan per face, then follow the links.
-            const auto faces = inc_.edge_faces(e);
-            if (faces.empty() || faces.size() > kMaxSteps) return faces_.fail("an interior edge with too many faces");
             std::array<std::pair<CellHandle, CellHandle>, kMaxSteps> link{};
             std::size_t n = 0;
+            if (around_ok_) {
+                std::size_t n_faces = 0;
+                for (std::size_t i = 0; i < n_around_; ++i)
+                    n_faces += around_[i].prev == w || around_[i].next == w ? 1 : 0;
+                if (n_faces == 0 || n_faces > kMaxSteps) return faces_.fail("an interior edge with too many faces");
+                for (std::size_t i = 0; i < n_around_; ++i) {
+                    const Around& a = around_[i];
+                    if (a.prev != w && a.next != w) continue;
+                    if (!a.two_cells) return faces_.fail("a face around an interior edge without two cells");
+                    const bool side0 = a.next == w;
+                    const std::size_t from = a.side0[0] == side0 ? 0 : 1;
+                    if (a.side0[1 - from] == side0) return faces_.fail("cells around an interior edge are not consistently oriented");
+                    link[n++] = {a.cells[from], a.cells[1 - from]};
+                }
+            }
+            const auto faces = around_ok_ ? std::span<const FaceHandle>{} : inc_.edge_faces(e);
+            if (!around_ok_ && (faces.empty() || faces.size() > kMaxSteps))
+                return faces_.fail("an interior edge with too many faces");
             for (FaceHandle f : faces) {
                 const auto cells = inc_.face_cells(f);
                 const auto hfs = inc_.face_halffaces(f);
@@ -394,6 +445,15 @@ private:
     std::vector<std::uint8_t> vertex_planes_, face_plane_;
     std::vector<std::uint32_t> face_dual_, edge_dual_, vertex_dual_;
     Faces faces_;
+    struct Around {
+        VertexHandle prev, next;
+        bool two_cells = false;
+        std::array<CellHandle, 2> cells{};
+        std::array<bool, 2> side0{};  // does cells[i] use side 0?
+    };
+    std::array<Around, 32> around_{};
+    std::size_t n_around_ = 0;
+    bool around_ok_ = false;
 };
 
 }  // namespace
