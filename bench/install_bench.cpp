@@ -72,8 +72,18 @@ LeafGrid flat_grid(int base) {
     return LeafGrid(std::move(leaves));
 }
 
+long minor_faults() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_minflt;
+}
+
 void row(const char* what, double seconds, const std::string& extra = {}) {
-    std::printf("  %-28s %8.3f s  peak %7.1f MB  %s\n", what, seconds, peak_mb(), extra.c_str());
+    static long faults = 0;
+    const long now_faults = minor_faults();
+    std::printf("  %-28s %8.3f s  peak %7.1f MB  faults %7ld  %s\n", what, seconds, peak_mb(), now_faults - faults,
+                extra.c_str());
+    faults = now_faults;
 }
 
 }  // namespace

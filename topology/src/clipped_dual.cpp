@@ -11,6 +11,13 @@ namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
+// Set bits of an 8-bit row (std::popcount is a libgcc call without -mpopcnt).
+constexpr int bits8(unsigned x) {
+    x = x - ((x >> 1) & 0x55U);
+    x = (x & 0x33U) + ((x >> 2) & 0x33U);
+    return static_cast<int>((x + (x >> 4)) & 0x0FU);
+}
+
 // Does half-face h walk the directed edge a -> b?
 bool walks(const CellComplex& k, HalfFaceHandle h, VertexHandle a, VertexHandle b) {
     const auto loop = k.face_vertices(h.face());
@@ -411,7 +418,7 @@ private:
         // 24 directed = 12 edges, each in two faces with opposite orientations; degree 3 each.
         bool below = false;
         for (std::uint8_t row : out) {
-            const int d = std::popcount(static_cast<unsigned>(row));
+            const int d = bits8(row);
             if (d > 3) return "a dual vertex of degree above 3";
             below = below || d < 3;
         }
@@ -433,7 +440,7 @@ private:
         constexpr std::size_t kRing[4] = {0, 3, 2, 1};
         for (std::size_t i = 0; i < 4; ++i) {
             const unsigned rest = out[qs[kRing[i]]] & ~ring;
-            if (std::popcount(rest) != 1) return "the dual cell is not a cube";
+            if (bits8(rest) != 1) return "the dual cell is not a cube";
             hex[i + 4] = verts[static_cast<std::size_t>(std::countr_zero(rest))];
         }
         return nullptr;
