@@ -143,6 +143,8 @@ public:
         if (ids_) n1_ = static_cast<std::int64_t>(n1);
     }
 
+    [[nodiscard]] bool dense() const { return ids_ != nullptr; }
+
     /// The vertex at finest-level corner (x, y, z), i.e. at the point U * (x, y, z).
     VertexHandle corner(std::int64_t x, std::int64_t y, std::int64_t z) {
         const LatticePoint p{x * unit_, y * unit_, z * unit_};
@@ -238,11 +240,13 @@ InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const El
     out.leaf_symmetry.assign(n_leaves, 0);
 
     ComplexBuilder builder;
-    builder.reserve(n_leaves + n_leaves / 2, 4 * n_leaves, n_leaves + n_leaves / 2);
+    CornerWelder weld(builder, U, out.max_level, n_leaves);
+    // With the corners welded densely, only element points off the corners are hashed.
+    builder.reserve(n_leaves + n_leaves / 2, 4 * n_leaves, n_leaves + n_leaves / 2,
+                    weld.dense() ? n_leaves / 8 : n_leaves + n_leaves / 2);
     std::vector<VertexHandle> vs, loop;
     std::vector<HalfFaceHandle> hfs;
     const detail::ElementTemplate& hex = cache.hex(U);
-    CornerWelder weld(builder, U, out.max_level, n_leaves);
     std::string last_name;
     int last_index = -1;
     for (std::size_t n = 0; n < n_leaves; ++n) {

@@ -11,9 +11,9 @@ std::uint64_t point_hash(const LatticePoint& p) { return LatticePointHash{}(p); 
 
 }  // namespace
 
-void ComplexBuilder::reserve(std::size_t n_vertices, std::size_t n_faces, std::size_t n_cells) {
+void ComplexBuilder::reserve(std::size_t n_vertices, std::size_t n_faces, std::size_t n_cells, std::size_t n_welded) {
     positions_.reserve(n_vertices);
-    vertex_table_.reserve(n_vertices);
+    vertex_table_.reserve(n_welded);
     face_offsets_.reserve(n_faces + 1);
     face_loops_.reserve(4 * n_faces);
     face_table_.reserve(n_vertices, [&](std::int32_t f) {

@@ -22,7 +22,12 @@ class ComplexBuilder {
 public:
     ComplexBuilder() = default;
     /// Pre-sizes the arrays (optional, for speed).
-    void reserve(std::size_t n_vertices, std::size_t n_faces, std::size_t n_cells);
+    void reserve(std::size_t n_vertices, std::size_t n_faces, std::size_t n_cells) {
+        reserve(n_vertices, n_faces, n_cells, n_vertices);
+    }
+    /// Same, with room in the welding table for only `n_welded` of the vertices (the rest
+    /// being added with add_vertex_unwelded).
+    void reserve(std::size_t n_vertices, std::size_t n_faces, std::size_t n_cells, std::size_t n_welded);
 
     /// The vertex at `p`, created if new.
     VertexHandle add_vertex(const LatticePoint& p);
