@@ -92,22 +92,15 @@ void emit_welded(ComplexBuilder& builder, const ElementTemplate& t, const Lattic
     emit_cells(builder, t, vertices, loop, halffaces);
 }
 
-/// Adds the template at `translation + scale * p` (each point then passed through `wrap`).
+/// Adds the template at `translation + scale * p` (each point then passed through `wrap`
+/// and welded by the builder).
 template <class Wrap>
 void emit(ComplexBuilder& builder, const ElementTemplate& t, const LatticePoint& translation, std::int64_t scale,
           Wrap&& wrap, std::vector<VertexHandle>& vertices, std::vector<VertexHandle>& loop,
           std::vector<HalfFaceHandle>& halffaces) {
-    vertices.resize(t.points.size());
-    for (std::size_t n = 0; n < t.points.size(); ++n) vertices[n] = builder.add_vertex(wrap(translation + t.points[n] * scale));
-    for (std::size_t c = 0; c + 1 < t.cell_offsets.size(); ++c) {
-        halffaces.clear();
-        for (std::uint32_t f = t.cell_offsets[c]; f < t.cell_offsets[c + 1]; ++f) {
-            loop.clear();
-            for (std::uint32_t q = t.face_offsets[f]; q < t.face_offsets[f + 1]; ++q) loop.push_back(vertices[t.face_points[q]]);
-            halffaces.push_back(builder.add_face(loop));
-        }
-        builder.add_cell(halffaces);
-    }
+    emit_welded(
+        builder, t, translation, scale, [&](const LatticePoint& p) { return builder.add_vertex(wrap(p)); }, vertices,
+        loop, halffaces);
 }
 
 /// Boundary faces (one cell) that do not lie on the domain's boundary are holes:
