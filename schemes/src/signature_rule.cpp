@@ -92,17 +92,20 @@ const std::vector<CanonicalElement>& strong_elements() {
     return kElements;
 }
 
+const std::array<std::array<int, 3>, 6>& axis_permutations() { return kPermutations; }
+
+Placement permutation_placement(const std::string& element, const std::array<int, 3>& s) {
+    std::array<int, 3> inverse{};  // image[s[i]] = p[i], i.e. perm = s^-1
+    for (int i = 0; i < 3; ++i) inverse[static_cast<std::size_t>(s[static_cast<std::size_t>(i)])] = i;
+    return Placement{element, CubeSymmetry(inverse, {1, 1, 1})};
+}
+
 std::optional<Placement> StrongRule::place(const LeafContext& context) const {
     const Signature need = required_signature(context);
     if (need.empty()) return std::nullopt;
     for (const auto& e : strong_elements())
         for (const auto& s : kPermutations)
-            if (e.signature.permuted(s) == need) {
-                // canonical axis i -> local axis s[i]: image[s[i]] = p[i], i.e. perm = s^-1
-                std::array<int, 3> inverse{};
-                for (int i = 0; i < 3; ++i) inverse[static_cast<std::size_t>(s[static_cast<std::size_t>(i)])] = i;
-                return Placement{e.name, CubeSymmetry(inverse, {1, 1, 1})};
-            }
+            if (e.signature.permuted(s) == need) return permutation_placement(e.name, s);
     throw UnknownPatternError("no strongly balanced element has signature " + need.to_string() + " (" +
                               context.describe() + ")");
 }

@@ -5,9 +5,6 @@
 namespace dualhex {
 namespace {
 
-constexpr std::array<std::array<int, 3>, 6> kPermutations{{
-    {0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
-
 struct MrElement {
     const char* base;   ///< the strong element it truncates
     const char* name;   ///< the MR element
@@ -23,12 +20,6 @@ unsigned permuted_bits(unsigned bits, const std::array<int, 3>& s) {
     for (int a = 0; a < 3; ++a)
         if (bits & (1u << a)) out |= 1u << s[static_cast<std::size_t>(a)];
     return out;
-}
-
-Placement placement_for(const std::string& name, const std::array<int, 3>& s) {
-    std::array<int, 3> inverse{};  // canonical axis i -> local axis s[i]: perm = s^-1
-    for (int i = 0; i < 3; ++i) inverse[static_cast<std::size_t>(s[static_cast<std::size_t>(i)])] = i;
-    return Placement{name, CubeSymmetry(inverse, {1, 1, 1})};
 }
 
 }  // namespace
@@ -58,8 +49,8 @@ std::optional<Placement> WeakRule::place(const LeafContext& context) const {
         const auto& elements = strong_elements();
         for (const auto& e : elements) {
             if (e.name != m.base) continue;
-            for (const auto& s : kPermutations)
-                if (e.signature.permuted(s) == need && permuted_bits(m.edges, s) == mr) return placement_for(m.name, s);
+            for (const auto& s : axis_permutations())
+                if (e.signature.permuted(s) == need && permuted_bits(m.edges, s) == mr) return permutation_placement(m.name, s);
         }
     }
     throw UnknownPatternError("no weakly balanced element has signature " + need.to_string() + " with truncated edges " +

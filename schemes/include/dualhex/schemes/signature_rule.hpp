@@ -16,6 +16,7 @@
 //
 // The element is the one of F, F+C, C1, C2, C3, E, VS, VC whose canonical signature, under
 // one of the 6 axis permutations, equals the required one.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,11 @@ struct CanonicalElement {
     Signature signature;
 };
 [[nodiscard]] const std::vector<CanonicalElement>& strong_elements();
+
+/// The 6 axis permutations, identity first (s[i] = the local axis canonical axis i goes to).
+[[nodiscard]] const std::array<std::array<int, 3>, 6>& axis_permutations();
+/// The placement putting canonical axis i onto local axis s[i] (its symmetry is s^-1).
+[[nodiscard]] Placement permutation_placement(const std::string& element, const std::array<int, 3>& s);
 
 class StrongRule : public TransitionRule {
 public:
