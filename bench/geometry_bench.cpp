@@ -7,6 +7,7 @@
 // pair(Weak) on it, with leaf counts. Two stopping rules: "lfs" = the default (cell edge
 // <= 0.5 * local thickness, or max depth), "all" = thickness_factor 0 (every crossing
 // cell down to max depth). Prints the machine (uname -n, CPU model) first.
+#include "machine.hpp"
 #include <sys/utsname.h>
 
 #include <chrono>
@@ -33,14 +34,6 @@ double seconds(F&& f) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,7 +45,7 @@ int main(int argc, char** argv) {
 
     utsname u{};
     uname(&u);
-    std::printf("machine: %s, CPU: %s\n\n", u.nodename, cpu_model().c_str());
+    std::printf("machine: %s, CPU: %s\n\n", u.nodename, dualhex::bench::cpu_model().c_str());
     std::printf("%-20s %7s %7s %7s %4s %2s %8s %9s %8s %9s %8s %9s %6s\n", "model", "tris", "load_s", "tree_s", "stop", "d",
                 "octree_s", "leaves", "strong_s", "strong", "weak_s", "weak", "s/w");
     try {

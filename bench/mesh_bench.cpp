@@ -6,6 +6,7 @@
 // Per model: milliseconds per stage, leaves, hexes, scaled Jacobian (min, mean), share
 // inverted (SJ < 0) and < 0.2, one-sided surface distance. Prints the machine first.
 // Writing is not timed here (the CLI times it).
+#include "machine.hpp"
 #include <sys/utsname.h>
 
 #include <algorithm>
@@ -22,18 +23,6 @@
 
 using namespace dualhex;
 using namespace dualhex::geometry;
-
-namespace {
-
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown";
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     int depth = 6;
@@ -53,7 +42,7 @@ int main(int argc, char** argv) {
 
     utsname u{};
     uname(&u);
-    std::printf("machine: %s, CPU: %s\n", u.nodename, cpu_model().c_str());
+    std::printf("machine: %s, CPU: %s\n", u.nodename, dualhex::bench::cpu_model().c_str());
     std::printf("max depth %d, %s balance; times in ms\n\n", depth, balance == Balance::Weak ? "weak" : "strong");
     std::printf("%-18s %7s %7s %7s %7s %7s %6s %7s %7s %6s %6s %7s | %7s %7s %8s %7s %7s %7s %8s\n", "model", "leaves",
                 "hexes", "octree", "pair", "install", "verify", "dual", "extract", "proj", "smooth", "total", "SJ_min",
