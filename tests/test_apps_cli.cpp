@@ -1,6 +1,8 @@
 // Runs the built `dualhex` binary (DUALHEX_EXE) as a process and checks its contract:
 // --help everywhere, JSON output, exit codes (README "Exit codes"), no silent overwrite.
 #include <gtest/gtest.h>
+
+#include "run_process.hpp"
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
@@ -17,23 +19,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int rc = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
+using Result = dualhex::test::ProcessResult;
+using dualhex::test::slurp;
 
 class Cli : public ::testing::Test {
 protected:
@@ -46,25 +33,7 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    Result run(const std::vector<std::string>& args) const {
-        std::string cmd = quote(DUALHEX_EXE);
-        for (const auto& a : args) {
-            cmd += ' ';
-            cmd += quote(a);
-        }
-        // (appended piecewise: `" >" + std::string` trips GCC 12's -Wrestrict false positive)
-        cmd += " >";
-        cmd += quote((dir_ / "stdout").string());
-        cmd += " 2>";
-        cmd += quote((dir_ / "stderr").string());
-        cmd += " </dev/null";
-        const int status = std::system(cmd.c_str());
-        Result r;
-        r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        r.out = slurp(dir_ / "stdout");
-        r.err = slurp(dir_ / "stderr");
-        return r;
-    }
+    Result run(const std::vector<std::string>& args) const { return dualhex::test::run_process(DUALHEX_EXE, args, dir_); }
 
     fs::path write(const std::string& name, const std::string& text) const {
         const fs::path p = dir_ / name;

@@ -3,6 +3,8 @@
 // a grid that is not strongly balanced is refused as bad input (exit 3) naming leaves,
 // existing outputs are not overwritten without --force (exit 2).
 #include <gtest/gtest.h>
+
+#include "run_process.hpp"
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,23 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int rc = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
+using Result = dualhex::test::ProcessResult;
+using dualhex::test::slurp;
 
 // Level 2 everywhere, the level-1 octant at the origin one level finer: paired, strongly
 // balanced, with flat, convex-edge and convex-corner transitions (and root-wall contacts).
@@ -117,22 +104,7 @@ protected:
     void TearDown() override { fs::remove_all(dir_); }
 
     Result run(const std::vector<std::string>& args, const std::string& exe = DUALHEX_EXE) const {
-        std::string cmd = quote(exe);
-        for (const auto& a : args) {
-            cmd += ' ';
-            cmd += quote(a);
-        }
-        cmd += " >";
-        cmd += quote((dir_ / "stdout").string());
-        cmd += " 2>";
-        cmd += quote((dir_ / "stderr").string());
-        cmd += " </dev/null";
-        const int status = std::system(cmd.c_str());
-        Result r;
-        r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        r.out = slurp(dir_ / "stdout");
-        r.err = slurp(dir_ / "stderr");
-        return r;
+        return dualhex::test::run_process(exe, args, dir_);
     }
     fs::path write(const std::string& name, const std::string& text) const {
         const fs::path p = dir_ / name;

@@ -2,6 +2,8 @@
 // the --json keys, an existing output is refused without --force (exit 2), a bad or
 // missing surface exits 3 naming the file, an unknown output extension exits 2.
 #include <gtest/gtest.h>
+
+#include "run_process.hpp"
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
@@ -18,23 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int rc = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using Result = dualhex::test::ProcessResult;
+using dualhex::test::slurp;
 
 class MeshCli : public ::testing::Test {
 protected:
@@ -46,17 +33,7 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    Result run(const std::vector<std::string>& args) const {
-        std::string cmd = quote(DUALHEX_EXE);
-        for (const auto& a : args) cmd += ' ' + quote(a);
-        cmd += " >" + quote((dir_ / "stdout").string()) + " 2>" + quote((dir_ / "stderr").string()) + " </dev/null";
-        const int status = std::system(cmd.c_str());
-        Result r;
-        r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        r.out = slurp(dir_ / "stdout");
-        r.err = slurp(dir_ / "stderr");
-        return r;
-    }
+    Result run(const std::vector<std::string>& args) const { return dualhex::test::run_process(DUALHEX_EXE, args, dir_); }
     fs::path dir_;
 };
 
