@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ private:
 void add_symmetry_checks(CheckRegistry& registry);
 void add_configuration_checks(CheckRegistry& registry);
 void add_grid_checks(CheckRegistry& registry);
+/// A face-size histogram as the JSON columns {"F3": n, ..., "F7": n} of the paper's table.
+nlohmann::json face_size_columns(const std::map<int, std::size_t>& histogram);
 void add_scheme_checks(CheckRegistry& registry);  // verify_schemes.cpp
 void add_variant_checks(CheckRegistry& registry);  // verify_variants.cpp
 void add_weak_checks(CheckRegistry& registry);    // verify_weak.cpp

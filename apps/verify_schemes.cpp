@@ -13,15 +13,6 @@
 namespace dualhex::app {
 namespace {
 
-nlohmann::json face_columns(const std::map<int, std::size_t>& histogram) {
-    nlohmann::json j = nlohmann::json::object();
-    for (int k = 3; k <= 7; ++k) {
-        const auto it = histogram.find(k);
-        j["F" + std::to_string(k)] = it == histogram.end() ? 0 : it->second;
-    }
-    return j;
-}
-
 CheckOutcome check_strong_elements() {
     const auto library = ElementLibrary::load_default();
     CheckOutcome out;
@@ -35,7 +26,7 @@ CheckOutcome check_strong_elements() {
         const auto row = paper_row(e.name);
         const bool same = row && element.valid() && compare_with_paper(histogram, *row).matches();
         if (same) ++equal;
-        out.details[e.name] = {{"computed", face_columns(histogram)},
+        out.details[e.name] = {{"computed", face_size_columns(histogram)},
                                {"paper", row ? nlohmann::json(row->counts) : nlohmann::json()},
                                {"cells", element.complex.n_cells()},
                                {"valid", element.valid()},
@@ -92,6 +83,17 @@ CheckOutcome check_strong_exhaustive() {
 }
 
 }  // namespace
+
+nlohmann::json face_size_columns(const std::map<int, std::size_t>& histogram) {
+    nlohmann::json j = nlohmann::json::object();
+    for (int k = 3; k <= 7; ++k) {
+        std::string key = "F";  // built piecewise: `"F" + std::to_string(k)` trips GCC 12's -Wrestrict
+        key += std::to_string(k);
+        const auto it = histogram.find(k);
+        j[key] = it == histogram.end() ? 0 : it->second;
+    }
+    return j;
+}
 
 void add_scheme_checks(CheckRegistry& registry) {
     registry.add({"schemes.strong-elements", "the 8 strongly balanced elements are valid and equal the paper's rows",

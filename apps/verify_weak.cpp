@@ -14,12 +14,6 @@ namespace {
 
 constexpr const char* kMrElements[] = {"E-MR", "VS-MR", "VC1-MR", "VC2-MR", "VC3-MR"};
 
-nlohmann::json columns(const std::map<int, std::size_t>& h) {
-    nlohmann::json j = nlohmann::json::object();
-    for (int k = 3; k <= 7; ++k) j["F" + std::to_string(k)] = h.count(k) ? h.at(k) : 0;
-    return j;
-}
-
 CheckOutcome check_weak_elements() {
     const auto library = ElementLibrary::load_default();
     CheckOutcome out;
@@ -32,7 +26,7 @@ CheckOutcome check_weak_elements() {
         const bool same = row && compare_with_paper(h, *row).matches();
         valid += e.valid();
         equal += same;
-        out.details[name] = {{"computed", columns(h)}, {"valid", e.valid()}, {"equal", same}, {"cells", e.complex.n_cells()}};
+        out.details[name] = {{"computed", face_size_columns(h)}, {"valid", e.valid()}, {"equal", same}, {"cells", e.complex.n_cells()}};
         report << "  " << name << ": " << format_histogram(h) << "  paper "
                << (row ? compare_with_paper(h, *row).summary() : std::string("missing")) << '\n';
     }
