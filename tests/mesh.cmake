@@ -14,3 +14,15 @@ if(DUALHEX_PYTHON3)
                    $<TARGET_FILE:dualhex> ${CMAKE_CURRENT_BINARY_DIR}/mesh_meshio_readback ${DUALHEX_SHARED_DATA})
   set_tests_properties(mesh_meshio_readback PROPERTIES SKIP_RETURN_CODE 77)
 endif()
+
+# Output read back with gmsh (python3-gmsh): no skip, a missing gmsh fails the test, since
+# scripts/debian-packages.txt installs it. Without python3 the test fails too (not found).
+find_program(DUALHEX_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+find_program(DUALHEX_PYTHON3 NAMES python3)
+set(_dualhex_python3 "${DUALHEX_PYTHON3}")
+if(NOT DUALHEX_PYTHON3)
+  set(_dualhex_python3 python3)
+endif()
+add_test(NAME mesh_gmsh_readback
+         COMMAND ${_dualhex_python3} ${CMAKE_CURRENT_SOURCE_DIR}/mesh_gmsh_readback.py
+                 $<TARGET_FILE:dualhex> ${CMAKE_CURRENT_BINARY_DIR}/mesh_gmsh_readback ${DUALHEX_SHARED_DATA})
