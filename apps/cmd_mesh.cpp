@@ -102,6 +102,8 @@ void run_mesh(const MeshOptionsCli& opt) {
                     {"hausdorff_mean", r.hausdorff.mean},
                     {"ms",
                      {{"octree", r.ms.octree},
+                      {"balance", r.ms.balance},
+                      {"pair", r.ms.pair},
                       {"balance_pair", r.ms.balance_pair},
                       {"install", r.ms.install},
                       {"verify", r.ms.verify},

@@ -2,7 +2,8 @@
 // The surface-to-hex-mesh pipeline (`dualhex mesh`, issue 7), first complete version.
 //
 //   surface --(AABB tree)--> octree refined at the surface (surface_octree)
-//           --> least paired + weakly/strongly balanced refinement (pair)
+//           --> least weakly/strongly balanced refinement (balance), then the least paired
+//               and balanced refinement of that (pair)
 //           --> elements installed (WeakRule / StrongRule), verify_installation must pass
 //           --> clipped dual (exact rational dual positions, one hex per primal vertex)
 //           --> embedding: lattice point p -> root.origin + root.size * p / extent,
@@ -48,10 +49,11 @@ struct MeshPipelineOptions {
     std::function<void(const std::string&)> progress;
 };
 
-/// Milliseconds per stage.
+/// Milliseconds per stage. balance_pair = balance + pair: the balanced grid first, then the
+/// least paired and balanced refinement of it (the same grid as pairing the octree directly).
 struct MeshTimes {
-    double octree = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, extract = 0, project = 0, smooth = 0,
-           untangle = 0, report = 0, write = 0;
+    double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, extract = 0,
+           project = 0, smooth = 0, untangle = 0, report = 0, write = 0;
 };
 
 struct MeshPipelineResult {
