@@ -137,6 +137,7 @@ CheckRegistry default_checks() {
     add_scheme_checks(r);
     add_variant_checks(r);
     add_weak_checks(r);
+    add_compositional_checks(r);
     return r;
 }
 

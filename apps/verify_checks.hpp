@@ -43,6 +43,7 @@ nlohmann::json face_size_columns(const std::map<int, std::size_t>& histogram);
 void add_scheme_checks(CheckRegistry& registry);  // verify_schemes.cpp
 void add_variant_checks(CheckRegistry& registry);  // verify_variants.cpp
 void add_weak_checks(CheckRegistry& registry);    // verify_weak.cpp
+void add_compositional_checks(CheckRegistry& registry);  // verify_compositional.cpp
 
 /// Every check that exists so far, in run order.
 CheckRegistry default_checks();

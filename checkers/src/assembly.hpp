@@ -39,6 +39,41 @@ struct ElementTemplate {
     [[nodiscard]] std::size_t n_cells() const { return cell_offsets.size() - 1; }
 };
 
+using Index3 = std::array<std::int64_t, 3>;
+
+[[nodiscard]] inline std::int64_t floor_mod(std::int64_t a, std::int64_t m) { return ((a % m) + m) % m; }
+[[nodiscard]] inline std::int64_t floor_div(std::int64_t a, std::int64_t m) { return (a - floor_mod(a, m)) / m; }
+
+/// The octant cube (min corner 2o, coarse-leaf units) that a leaf with this application
+/// point and direction sees as local octant `local` (each in {-2,-1,0,1}).
+[[nodiscard]] inline Index3 world_octant(const LeafContext& ctx, const std::array<int, 3>& local) {
+    Index3 w{};
+    for (std::size_t a = 0; a < 3; ++a) {
+        const std::int64_t half = ctx.application_point[static_cast<int>(a)] / 2;
+        w[a] = ctx.direction[a] > 0 ? half + local[a] : half - local[a] - 1;
+    }
+    return w;
+}
+
+/// The context of the coarse leaf with min corner `leaf` (coarse-leaf units; octant cube o
+/// has min corner 2o): its application point (the corner of its octant it touches), its
+/// direction, and the 4x4x4 octant cubes around the application point, `fine(o)` giving
+/// the status of octant cube o.
+template <class Fine>
+[[nodiscard]] LeafContext coarse_leaf_context(const LatticePoint& leaf, Fine&& fine) {
+    LeafContext ctx;
+    for (int a = 0; a < 3; ++a) {
+        const bool even = floor_mod(leaf[a], 2) == 0;
+        ctx.application_point[a] = even ? leaf[a] : leaf[a] + 1;
+        ctx.direction[static_cast<std::size_t>(a)] = even ? 1 : -1;
+    }
+    for (int i = -2; i <= 1; ++i)
+        for (int j = -2; j <= 1; ++j)
+            for (int k = -2; k <= 1; ++k)
+                if (fine(world_octant(ctx, {i, j, k}))) ctx.set_fine(i, j, k);
+    return ctx;
+}
+
 /// The common lattice unit of a library (see above); 2 for an empty library.
 [[nodiscard]] std::int64_t common_unit(const ElementLibrary& library);
 

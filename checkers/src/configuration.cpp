@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "assembly.hpp"
+#include "window_check.hpp"
 #include "dualhex/checkers/cube_window.hpp"
 #include "dualhex/checkers/periodic_configuration.hpp"
 #include "dualhex/topology/dual.hpp"
@@ -50,9 +51,10 @@ std::string ConfigurationReport::summary() const {
 
 namespace {
 
-using Index3 = std::array<std::int64_t, 3>;
-
-std::int64_t floor_mod(std::int64_t a, std::int64_t m) { return ((a % m) + m) % m; }
+using Index3 = detail::Index3;
+using detail::check;
+using detail::check_window;
+using detail::floor_mod;
 
 // Builds the complex of a configuration: `octants` are the octant cubes (min corner 2*o)
 // that are built; `fine(o)` the status of any octant cube (for contexts); `wrap` maps
@@ -83,25 +85,8 @@ ConfigurationComplex assemble(std::uint8_t mask, const std::vector<Index3>& octa
         for (int c = 0; c < 8; ++c) {
             PlacedLeaf leaf;
             leaf.leaf = lo + LatticePoint{c & 1, (c >> 1) & 1, (c >> 2) & 1};
-            LeafContext& ctx = leaf.context;
-            for (int a = 0; a < 3; ++a) {
-                const std::int64_t x = leaf.leaf[a];
-                const bool even = floor_mod(x, 2) == 0;
-                ctx.application_point[a] = even ? x : x + 1;
-                ctx.direction[static_cast<std::size_t>(a)] = even ? 1 : -1;
-            }
-            for (int i = -2; i <= 1; ++i)
-                for (int j = -2; j <= 1; ++j)
-                    for (int k = -2; k <= 1; ++k) {
-                        const int local[3] = {i, j, k};
-                        Index3 w{};
-                        for (int a = 0; a < 3; ++a) {
-                            const std::int64_t half = ctx.application_point[a] / 2;
-                            w[static_cast<std::size_t>(a)] =
-                                ctx.direction[static_cast<std::size_t>(a)] > 0 ? half + local[a] : half - local[a] - 1;
-                        }
-                        if (fine(w)) ctx.set_fine(i, j, k);
-                    }
+            leaf.context = detail::coarse_leaf_context(leaf.leaf, fine);
+            const LeafContext& ctx = leaf.context;
             leaf.placement = rule.place(ctx);
             if (leaf.placement) {
                 detail::check_placement_symmetry(*leaf.placement);
@@ -116,47 +101,6 @@ ConfigurationComplex assemble(std::uint8_t mask, const std::vector<Index3>& octa
     }
     out.complex = std::move(builder).build();
     return out;
-}
-
-// `accept(p)`: the vertex at p gets the interior checks; `on_domain_boundary(p)`: p lies
-// on the domain's boundary (a boundary face all of whose points do is expected).
-template <class Filter, class OnBoundary>
-ConfigurationReport analyse(ConfigurationComplex built, Filter&& accept, OnBoundary&& on_domain_boundary) {
-    ConfigurationReport r;
-    r.mask = built.mask;
-    r.built = true;
-    const CellComplex& cx = built.complex;
-    ValidationOptions options;
-    options.interior_filter = [&](VertexHandle v) { return accept(cx.position(v)); };
-    r.validation = validate(cx, options);
-    r.vertices = cx.n_vertices();
-    r.edges = cx.n_edges();
-    r.faces = cx.n_faces();
-    r.cells = cx.n_cells();
-    const Incidence inc(cx);
-    for (std::size_t v = 0; v < cx.n_vertices(); ++v)
-        if (!inc.is_boundary(VertexHandle(v)) && accept(cx.position(VertexHandle(v)))) ++r.checked_vertices;
-    r.open_faces = detail::check_open_faces(cx, inc, accept, on_domain_boundary, r.validation);
-    const DualResult dual = interior_dual(cx, inc);
-    for (VertexHandle v : dual.mesh.primal_vertex)
-        if (accept(cx.position(v))) ++r.hexes;
-    r.face_sizes = face_size_histogram(cx);
-    r.dual_edge_valences = interior_dual_edge_valence_histogram(cx, inc);
-    for (const PlacedLeaf& leaf : built.coarse_leaves) ++r.elements[leaf.placement ? leaf.placement->element : "hex"];
-    if (built.fine_hexes) r.elements["fine"] = built.fine_hexes;
-    return r;
-}
-
-template <class Build, class Filter, class OnBoundary>
-ConfigurationReport check(std::uint8_t mask, Build&& build, Filter&& accept, OnBoundary&& on_boundary) {
-    try {
-        return analyse(build(), accept, on_boundary);
-    } catch (const std::exception& e) {
-        ConfigurationReport r;
-        r.mask = mask;
-        r.error = e.what();
-        return r;
-    }
 }
 
 }  // namespace
@@ -300,25 +244,6 @@ ConfigurationReport check_periodic_levels(const std::function<int(int, int, int)
                                           const TransitionRule& rule, const ElementLibrary& library) {
     return check(0, [&] { return build_periodic_levels(level, n_octants, rule, library); },
                  [](const LatticePoint&) { return true; }, [](const CellComplex&, std::span<const VertexHandle>) { return false; });
-}
-
-// The window [-half, half]^3: vertices strictly inside get the interior checks; a boundary
-// face is expected iff all its points lie in one plane of the window's surface.
-template <class Build>
-ConfigurationReport check_window(std::uint8_t mask, std::int64_t half, Build&& build) {
-    const auto inside = [half](const LatticePoint& p) {
-        return -half < p.x && p.x < half && -half < p.y && p.y < half && -half < p.z && p.z < half;
-    };
-    const auto on_surface = [half](const CellComplex& cx, std::span<const VertexHandle> loop) {
-        for (int a = 0; a < 3; ++a)
-            for (std::int64_t side : {-half, half}) {
-                bool all = true;
-                for (VertexHandle v : loop) all = all && cx.position(v)[a] == side;
-                if (all) return true;
-            }
-        return false;
-    };
-    return check(mask, build, inside, on_surface);
 }
 
 ConfigurationReport check_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,

@@ -100,8 +100,24 @@ Placement permutation_placement(const std::string& element, const std::array<int
     return Placement{element, CubeSymmetry(inverse, {1, 1, 1})};
 }
 
+std::uint64_t strong_reach() {
+    std::uint64_t reach = std::uint64_t{1} << LeafContext::neighbourhood_bit(0, 0, 0);
+    for (int a = 0; a < 3; ++a) {
+        const auto bit = [](const std::array<int, 3>& o) {
+            return std::uint64_t{1} << LeafContext::neighbourhood_bit(o[0], o[1], o[2]);
+        };
+        auto diagonal = unit((a + 1) % 3, -1);
+        diagonal[static_cast<std::size_t>((a + 2) % 3)] = -1;
+        reach |= bit(unit(a, -1)) | bit(unit(a, +1)) | bit(diagonal);
+    }
+    return reach;
+}
+
 std::optional<Placement> StrongRule::place(const LeafContext& context) const {
-    const Signature need = required_signature(context);
+    LeafContext visible = context;  // what the rule may see: its reach, nothing else
+    visible.neighbourhood &= strong_reach();
+    visible.edge_two_finer = 0;
+    const Signature need = required_signature(visible);
     if (need.empty()) return std::nullopt;
     for (const auto& e : strong_elements())
         for (const auto& s : kPermutations)

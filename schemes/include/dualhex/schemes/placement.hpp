@@ -91,6 +91,11 @@ public:
     /// (UnknownPatternError for a pattern the rule does not cover).
     [[nodiscard]] virtual std::optional<Placement> place(const LeafContext& context) const = 0;
     [[nodiscard]] virtual std::string name() const { return "rule"; }
+    /// The local octant cubes (LeafContext::neighbourhood bits) place() may depend on: a
+    /// rule whose reach is smaller than all 64 must ignore the other bits (the strong rule
+    /// masks its input, so this holds by construction). The compositional argument
+    /// (checkers/compositional.hpp) enumerates exactly these bits.
+    [[nodiscard]] virtual std::uint64_t reach() const { return ~std::uint64_t{0}; }
 };
 
 /// Test rule: the flat transition only. Among the 7 octants around P other than the leaf's

@@ -52,10 +52,18 @@ struct CanonicalElement {
 /// The placement putting canonical axis i onto local axis s[i] (its symmetry is s^-1).
 [[nodiscard]] Placement permutation_placement(const std::string& element, const std::array<int, 3>& s);
 
+/// The local octant cubes the strong rule reads: the leaf's own octant (0,0,0), the three
+/// across its inner faces (-e_a), the three diagonal to its inner edges (-e_b - e_c) and the
+/// three across its far faces (+e_a). Not the corner-diagonal (-1,-1,-1).
+[[nodiscard]] std::uint64_t strong_reach();
+
 class StrongRule : public TransitionRule {
 public:
+    /// Depends on context.neighbourhood & strong_reach() only (the rest is masked off before
+    /// anything is read; edge_two_finer is ignored).
     [[nodiscard]] std::optional<Placement> place(const LeafContext& context) const override;
     [[nodiscard]] std::string name() const override { return "strong"; }
+    [[nodiscard]] std::uint64_t reach() const override { return strong_reach(); }
 };
 
 }  // namespace dualhex

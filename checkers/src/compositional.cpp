@@ -1,0 +1,294 @@
+#include "dualhex/checkers/compositional.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "assembly.hpp"
+#include "window_check.hpp"
+
+namespace dualhex {
+namespace {
+
+using detail::Index3;
+constexpr int kLeaves = 8;  // the 2x2x2 leaves of B(g)
+
+std::vector<int> reach_bits(const TransitionRule& rule) {
+    std::vector<int> bits;
+    for (int b = 0; b < 64; ++b)
+        if ((rule.reach() >> b) & 1U) bits.push_back(b);
+    return bits;
+}
+
+std::array<int, 3> local_of_bit(int b) { return {(b & 3) - 2, ((b >> 2) & 3) - 2, ((b >> 4) & 3) - 2}; }
+
+// Lemma (header, 2): with none of the 7 octants around P fine, the rule places nothing.
+// Every value of the other bits of the reach is tried (the own octant stays coarse).
+void check_lemma(const TransitionRule& rule, CompositionalResult& result) {
+    std::vector<int> free;
+    for (int b : reach_bits(rule)) {
+        const auto o = local_of_bit(b);
+        const bool at_p = o[0] <= 0 && o[0] >= -1 && o[1] <= 0 && o[1] >= -1 && o[2] <= 0 && o[2] >= -1;
+        if (!at_p) free.push_back(b);
+    }
+    for (std::uint64_t a = 0; a < (std::uint64_t{1} << free.size()); ++a) {
+        LeafContext ctx;
+        for (std::size_t i = 0; i < free.size(); ++i)
+            if ((a >> i) & 1U) ctx.neighbourhood |= std::uint64_t{1} << free[i];
+        ++result.lemma_contexts;
+        try {
+            if (!rule.place(ctx)) ++result.lemma_plain;
+        } catch (const std::exception&) {  // an error is not "plain": the lemma fails
+        }
+    }
+}
+
+// One parity type: the 8 leaves of B(g), g = parity, and the octants they read.
+struct WindowType {
+    std::array<int, 3> parity{};
+    std::array<LatticePoint, kLeaves> leaves;  // min corners, coarse-leaf units
+    std::vector<Index3> reads;                 // R(t)
+    std::array<std::vector<int>, kLeaves> read_index;  // per leaf: indices into reads
+    std::array<int, kLeaves> own{};            // per leaf: its own octant's index
+};
+
+Index3 octant_of(const LatticePoint& leaf) {
+    return {detail::floor_div(leaf.x, 2), detail::floor_div(leaf.y, 2), detail::floor_div(leaf.z, 2)};
+}
+
+WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& rule) {
+    WindowType t;
+    t.parity = parity;
+    std::map<Index3, int> index;
+    const auto intern = [&](const Index3& o) {
+        const auto [it, fresh] = index.emplace(o, static_cast<int>(t.reads.size()));
+        if (fresh) t.reads.push_back(o);
+        return it->second;
+    };
+    for (int n = 0; n < kLeaves; ++n) {
+        const LatticePoint leaf{parity[0] - 1 + (n & 1), parity[1] - 1 + ((n >> 1) & 1), parity[2] - 1 + ((n >> 2) & 1)};
+        t.leaves[static_cast<std::size_t>(n)] = leaf;
+        const LeafContext frame = detail::coarse_leaf_context(leaf, [](const Index3&) { return false; });
+        auto& mine = t.read_index[static_cast<std::size_t>(n)];
+        t.own[static_cast<std::size_t>(n)] = intern(octant_of(leaf));
+        mine.push_back(t.own[static_cast<std::size_t>(n)]);
+        for (int b : reach_bits(rule)) mine.push_back(intern(detail::world_octant(frame, local_of_bit(b))));
+        std::sort(mine.begin(), mine.end());
+        mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+    }
+    if (t.reads.size() > 63) throw std::length_error("compositional: more than 63 octants read by one window");
+    return t;
+}
+
+// Interned outcomes of a leaf: "fine", "hex", "E/<symmetry>", "error: ...".
+class Outcomes {
+public:
+    int id(const std::string& key) { return ids_.emplace(key, static_cast<int>(ids_.size())).first->second; }
+
+private:
+    std::unordered_map<std::string, int> ids_;
+};
+
+bool fine_in(const WindowType& t, std::uint64_t pattern, const Index3& o) {
+    for (std::size_t i = 0; i < t.reads.size(); ++i)
+        if (t.reads[i] == o) return (pattern >> i) & 1U;
+    return false;  // not read by the rule: its value cannot matter (reach)
+}
+
+// Per leaf: the outcome of each assignment of the leaf's own read octants (bit j: read_index[j]).
+std::vector<int> outcome_table(const WindowType& t, int n, const TransitionRule& rule, Outcomes& outcomes) {
+    const auto& mine = t.read_index[static_cast<std::size_t>(n)];
+    std::vector<int> table(std::size_t{1} << mine.size());
+    for (std::uint64_t a = 0; a < table.size(); ++a) {
+        std::uint64_t pattern = 0;
+        for (std::size_t j = 0; j < mine.size(); ++j)
+            if ((a >> j) & 1U) pattern |= std::uint64_t{1} << mine[j];
+        const LatticePoint& leaf = t.leaves[static_cast<std::size_t>(n)];
+        std::string key;
+        if ((pattern >> t.own[static_cast<std::size_t>(n)]) & 1U) {
+            key = "fine";
+        } else {
+            try {
+                const auto p = rule.place(detail::coarse_leaf_context(leaf, [&](const Index3& o) { return fine_in(t, pattern, o); }));
+                key = p ? p->element + "/" + std::to_string(p->symmetry.index()) : "hex";
+            } catch (const std::exception& e) {
+                key = std::string("error: ") + e.what();
+            }
+        }
+        table[a] = outcomes.id(key);
+    }
+    return table;
+}
+
+using Signature = std::array<int, kLeaves>;
+struct SignatureHash {
+    std::size_t operator()(const Signature& s) const {
+        std::size_t h = 1469598103934665603ULL;
+        for (int x : s) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ULL;
+        return h;
+    }
+};
+
+std::uint64_t gather(std::uint64_t pattern, const std::vector<int>& indices) {
+    std::uint64_t a = 0;
+    for (std::size_t j = 0; j < indices.size(); ++j) a |= ((pattern >> indices[j]) & 1U) << j;
+    return a;
+}
+
+// Every distinct window of a type with one witness pattern each: the shared octants are
+// enumerated jointly; for each leaf, its private octants (read by no other leaf) only
+// change its own outcome, so the window's outcomes are the product of per-leaf choices.
+std::vector<std::uint64_t> distinct_windows(const WindowType& t, const TransitionRule& rule, int& shared_count) {
+    Outcomes outcomes;
+    std::array<std::vector<int>, kLeaves> tables;
+    for (int n = 0; n < kLeaves; ++n) tables[static_cast<std::size_t>(n)] = outcome_table(t, n, rule, outcomes);
+    std::vector<int> readers(t.reads.size(), 0);
+    for (const auto& mine : t.read_index)
+        for (int i : mine) ++readers[static_cast<std::size_t>(i)];
+    std::vector<int> shared;
+    std::array<std::vector<int>, kLeaves> private_bits;
+    for (std::size_t i = 0; i < t.reads.size(); ++i)
+        if (readers[i] > 1) shared.push_back(static_cast<int>(i));
+    for (int n = 0; n < kLeaves; ++n)
+        for (int i : t.read_index[static_cast<std::size_t>(n)])
+            if (readers[static_cast<std::size_t>(i)] == 1) private_bits[static_cast<std::size_t>(n)].push_back(i);
+    shared_count = static_cast<int>(shared.size());
+
+    std::unordered_map<Signature, std::uint64_t, SignatureHash> seen;
+    std::vector<std::uint64_t> witnesses;
+    for (std::uint64_t s = 0; s < (std::uint64_t{1} << shared.size()); ++s) {
+        std::uint64_t base = 0;
+        for (std::size_t j = 0; j < shared.size(); ++j)
+            if ((s >> j) & 1U) base |= std::uint64_t{1} << shared[j];
+        // per leaf: its distinct outcomes over its private octants, with a witness each
+        std::array<std::vector<std::pair<int, std::uint64_t>>, kLeaves> choices;
+        for (int n = 0; n < kLeaves; ++n) {
+            const auto& priv = private_bits[static_cast<std::size_t>(n)];
+            auto& mine = choices[static_cast<std::size_t>(n)];
+            for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv.size()); ++q) {
+                std::uint64_t extra = 0;
+                for (std::size_t j = 0; j < priv.size(); ++j)
+                    if ((q >> j) & 1U) extra |= std::uint64_t{1} << priv[j];
+                const int o = tables[static_cast<std::size_t>(n)][gather(base | extra, t.read_index[static_cast<std::size_t>(n)])];
+                if (std::none_of(mine.begin(), mine.end(), [o](const auto& c) { return c.first == o; })) mine.emplace_back(o, extra);
+            }
+        }
+        std::array<std::size_t, kLeaves> at{};  // odometer over the product of the choices
+        for (bool more = true; more;) {
+            Signature sig{};
+            std::uint64_t pattern = base;
+            for (int n = 0; n < kLeaves; ++n) {
+                const auto& c = choices[static_cast<std::size_t>(n)][at[static_cast<std::size_t>(n)]];
+                sig[static_cast<std::size_t>(n)] = c.first;
+                pattern |= c.second;
+            }
+            if (seen.emplace(sig, pattern).second) witnesses.push_back(pattern);
+            more = false;
+            for (int n = 0; n < kLeaves && !more; ++n) {
+                auto& k = at[static_cast<std::size_t>(n)];
+                if (++k < choices[static_cast<std::size_t>(n)].size()) more = true;
+                else k = 0;
+            }
+        }
+    }
+    return witnesses;
+}
+
+// B(g) for one pattern, translated so that g is the origin: [-U, U]^3.
+ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
+                                  detail::TemplateCache& cache) {
+    const std::int64_t U = cache.unit();
+    const LatticePoint g{t.parity[0], t.parity[1], t.parity[2]};
+    const auto wrap = [&](const LatticePoint& p) { return p - g * U; };
+    const auto fine = [&](const Index3& o) { return fine_in(t, pattern, o); };
+    ConfigurationComplex out;
+    out.unit = U;
+    ComplexBuilder builder;
+    std::vector<VertexHandle> vs, loop;
+    std::vector<HalfFaceHandle> hfs;
+    for (const LatticePoint& leaf : t.leaves) {
+        if (fine(octant_of(leaf))) {
+            for (int c = 0; c < 8; ++c) {
+                const LatticePoint at = leaf * U + LatticePoint{c & 1, (c >> 1) & 1, (c >> 2) & 1} * (U / 2);
+                detail::emit(builder, cache.hex(U / 2), at, 1, wrap, vs, loop, hfs);
+                ++out.fine_hexes;
+            }
+            continue;
+        }
+        PlacedLeaf placed{leaf, detail::coarse_leaf_context(leaf, fine), std::nullopt};
+        placed.placement = rule.place(placed.context);
+        if (placed.placement) {
+            detail::check_placement_symmetry(*placed.placement);
+            const int e = cache.element_index(placed.placement->element);
+            const auto& tmpl = cache.placed(e, world_symmetry(placed.context, *placed.placement));
+            detail::emit(builder, tmpl, placed.context.application_point * U, 1, wrap, vs, loop, hfs);
+        } else {
+            detail::emit(builder, cache.hex(U), leaf * U, 1, wrap, vs, loop, hfs);
+        }
+        out.coarse_leaves.push_back(std::move(placed));
+    }
+    out.complex = std::move(builder).build();
+    return out;
+}
+
+std::string describe(const std::array<int, 3>& parity, const std::vector<Index3>& reads, std::uint64_t pattern) {
+    std::ostringstream os;
+    os << "g=(" << parity[0] << ',' << parity[1] << ',' << parity[2] << ") fine octants {";
+    const char* sep = "";
+    for (std::size_t i = 0; i < reads.size(); ++i) {
+        if (!((pattern >> i) & 1U)) continue;
+        os << sep << '(' << reads[i][0] << ',' << reads[i][1] << ',' << reads[i][2] << ')';
+        sep = " ";
+    }
+    os << '}';
+    return os.str();
+}
+
+}  // namespace
+
+CompositionalResult run_compositional(const TransitionRule& rule, const ElementLibrary& library,
+                                      const CompositionalOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    CompositionalResult result;
+    result.rule = rule.name();
+    result.reach_octants = static_cast<int>(reach_bits(rule).size());
+    check_lemma(rule, result);
+    detail::TemplateCache cache(library);
+    const std::int64_t half = cache.unit();
+    for (int p = 0; p < 8; ++p) {
+        const WindowType t = window_type({p & 1, (p >> 1) & 1, (p >> 2) & 1}, rule);
+        WindowTypeResult tr;
+        tr.parity = t.parity;
+        tr.read_octants = static_cast<int>(t.reads.size());
+        const std::vector<std::uint64_t> patterns = distinct_windows(t, rule, tr.shared_octants);
+        const auto stop = [&] { return options.stop_after_failures && result.failed >= options.stop_after_failures; };
+        for (std::size_t w = 0; w < patterns.size() && !stop(); ++w) {
+            ConfigurationComplex built;
+            const ConfigurationReport report =
+                detail::check_window(0, half, [&] { return built = build_window(t, patterns[w], rule, cache); });
+            ++tr.windows;
+            tr.checked_vertices += report.checked_vertices;
+            if (report.ok()) {
+                ++tr.passed;
+            } else if (++result.failed <= 10) {
+                result.failures.push_back(describe(t.parity, t.reads, patterns[w]) + ": " + report.summary());
+            }
+            if (options.on_window) options.on_window({t.parity, w, t.reads, patterns[w], &built, &report});
+        }
+        result.windows += tr.windows;
+        result.passed += tr.passed;
+        result.checked_vertices += tr.checked_vertices;
+        result.types.push_back(tr);
+    }
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+std::string describe_window(const CompositionalWindow& window) {
+    return describe(window.parity, window.reads, window.pattern);
+}
+
+}  // namespace dualhex
