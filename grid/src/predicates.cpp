@@ -10,10 +10,28 @@ GridCheck failure(const LeafGrid& grid, std::size_t a, std::size_t b, std::strin
     return {false, a, b, std::move(message)};
 }
 
+// Paired, with about 2 lookups per leaf instead of 8: a leaf other than its parent's child 0
+// only needs child 0 to be a leaf, which in turn checks all its siblings. (Lookups are
+// cache misses on large grids.)
+bool quickly_paired(const LeafGrid& grid) {
+    for (const Leaf& leaf : grid.leaves()) {
+        if (leaf.level == 0) continue;
+        const auto siblings = children(parent(leaf));
+        if (child_index(leaf) != 0) {
+            if (!grid.find(siblings[0])) return false;
+            continue;
+        }
+        for (std::size_t c = 1; c < 8; ++c)
+            if (!grid.find(siblings[c])) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 GridCheck is_paired(const LeafGrid& grid) {
-    for (std::size_t n = 0; n < grid.size(); ++n) {
+    if (quickly_paired(grid)) return {};
+    for (std::size_t n = 0; n < grid.size(); ++n) {  // the first leaf in order with a subdivided sibling
         const Leaf& leaf = grid.leaf(n);
         if (leaf.level == 0) continue;
         for (const Leaf& sibling : children(parent(leaf))) {
@@ -43,13 +61,18 @@ std::size_t leaf_towards(const LeafGrid& grid, Leaf cell, const Offset& d) {
 // Balanced iff every interior node's same-level neighbours (through the contacts `mode`
 // constrains) are nodes too, not strictly inside a coarser leaf (see refinement.cpp).
 // One pass over interior nodes; a violation yields the pair (a leaf of the node nearest
-// the neighbour, the coarse leaf covering the neighbour), >= 2 levels apart.
+// the neighbour, the coarse leaf covering the neighbour), >= 2 levels apart. A neighbour
+// with the node's parent is a node (a tiling covers every child of an interior node), and
+// locate() tells a node (itself or nothing) from a cell inside a coarser leaf in one lookup.
 GridCheck is_balanced(const LeafGrid& grid, Balance mode) {
     for (const Leaf& node : grid.interior_nodes()) {
+        const Leaf up = node.level > 0 ? parent(node) : node;  // the root has no valid neighbour
         for (const Offset& d : neighbour_offsets(mode)) {
             const Leaf cell = neighbour(node, d);
-            if (!cell.valid() || grid.find(cell) || grid.is_subdivided(cell)) continue;
-            const std::size_t coarse = *grid.locate(cell);
+            if (!cell.valid() || parent(cell) == up) continue;
+            const auto located = grid.locate(cell);
+            if (!located || grid.leaf(*located).level == cell.level) continue;
+            const std::size_t coarse = *located;
             const std::size_t fine = leaf_towards(grid, node, d);
             return failure(grid, fine, coarse, std::string(mode == Balance::Strong ? "not strongly" : "not weakly") +
                                                    " balanced: leaves " + grid.describe(fine) + " and " +
