@@ -1,19 +1,21 @@
-// dualhex certify --out DIR: writes the certificates of the element library and of the 256
-// configurations under the strong rule (format and checker: proofs/README.md). The
-// certificates are untrusted output; `dualhex-proof-checker DIR/manifest` re-checks them.
+// dualhex certify --out DIR: writes the certificates of the element library, the 256
+// configurations under the strong rule (DIR), the 487 weakly balanced ones under the weak rule
+// (DIR/weak) and the 14 crossing variants (DIR/variants), each directory with its manifest
+// (format and checker: proofs/README.md). The certificates are untrusted output;
+// `dualhex-proof-checker DIR/manifest` (and DIR/weak/manifest, DIR/variants/manifest)
+// re-checks them.
 #include <iostream>
 
 #include "commands.hpp"
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/schemes/element_library.hpp"
-#include "dualhex/schemes/signature_rule.hpp"
 
 namespace dualhex::app {
 
 void register_certify(CLI::App& app) {
     auto* sub = app.add_subcommand("certify",
-                                   "Write certificates (elements + the 256 strong-rule configurations) for the "
-                                   "independent checker dualhex-proof-checker");
+                                   "Write certificates (elements, the 256 strong and 487 weak configurations, the 14 "
+                                   "crossing variants) for the independent checker dualhex-proof-checker");
     struct Options {
         std::string out, elements;
         bool force = false, json = false;
@@ -21,30 +23,38 @@ void register_certify(CLI::App& app) {
     auto opt = std::make_shared<Options>();
     sub->add_option("--out", opt->out, "Directory to write the certificates and the manifest into")->required();
     sub->add_option("--elements", opt->elements, "Element directory (default: the element library's default)");
-    sub->add_flag("--force", opt->force, "Overwrite an existing manifest in DIR");
+    sub->add_flag("--force", opt->force, "Overwrite existing manifests in DIR, DIR/weak, DIR/variants");
     add_json_flag(*sub, opt->json);
     sub->callback([opt] {
         const std::filesystem::path dir = opt->out;
-        check_output(dir / "manifest", opt->force);
+        for (const char* sub_dir : {"", "weak", "variants"}) check_output(dir / sub_dir / "manifest", opt->force);
         const ElementLibrary library =
             opt->elements.empty() ? ElementLibrary::load_default() : ElementLibrary::load(opt->elements);
-        const StrongRule rule;
-        const CertifyResult result = certify_library(library, rule, dir);
+        const CertifyResult result = certify_library(library, dir);
         if (opt->json) {
-            nlohmann::json files = nlohmann::json::array();
-            for (const ManifestEntry& e : result.files)
-                files.push_back({{"file", e.file}, {"certificates", e.certificates}, {"kind", to_string(e.kind)},
-                                 {"fnv1a64", e.hash}});
+            nlohmann::json sets = nlohmann::json::array();
+            for (const CertificateSet& set : result.sets) {
+                nlohmann::json files = nlohmann::json::array();
+                for (const ManifestEntry& e : set.files)
+                    files.push_back({{"file", e.file}, {"certificates", e.certificates}, {"kind", to_string(e.kind)},
+                                     {"fnv1a64", e.hash}});
+                sets.push_back({{"directory", set.directory.string()}, {"manifest", (set.directory / "manifest").string()},
+                                {"certificates", set.certificates}, {"bytes", set.bytes}, {"covers", set.covers},
+                                {"files", files}});
+            }
             print_json({{"directory", dir.string()}, {"manifest", (dir / "manifest").string()},
-                        {"certificates", result.certificates}, {"bytes", result.bytes}, {"files", files}});
+                        {"certificates", result.certificates()}, {"bytes", result.bytes()}, {"sets", sets}});
             return;
         }
-        for (const ManifestEntry& e : result.files)
-            std::cout << (dir / e.file).string() << ": " << e.certificates << ' ' << to_string(e.kind)
-                      << " certificates, fnv1a64 " << e.hash << '\n';
-        std::cout << "wrote " << result.certificates << " certificates (" << result.bytes << " bytes) and "
-                  << (dir / "manifest").string() << "\nre-check with: dualhex-proof-checker "
-                  << (dir / "manifest").string() << '\n';
+        for (const CertificateSet& set : result.sets) {
+            for (const ManifestEntry& e : set.files)
+                std::cout << (set.directory / e.file).string() << ": " << e.certificates << ' ' << to_string(e.kind)
+                          << " certificates, fnv1a64 " << e.hash << '\n';
+            std::cout << (set.directory / "manifest").string() << ": " << set.certificates << " certificates ("
+                      << set.bytes << " bytes), covering labels 0.." << set.covers - 1 << '\n';
+        }
+        std::cout << "wrote " << result.certificates() << " certificates (" << result.bytes()
+                  << " bytes); re-check each manifest with: dualhex-proof-checker MANIFEST\n";
     });
 }
 

@@ -9,7 +9,6 @@
 #include "commands.hpp"
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/schemes/element_library.hpp"
-#include "dualhex/schemes/signature_rule.hpp"
 #include "verify_checks.hpp"
 
 namespace dualhex::app {
@@ -52,7 +51,9 @@ void run_verify(const VerifyOptions& opt) {
         return;
     }
 
-    if (!opt.certify.empty()) check_output(std::filesystem::path(opt.certify) / "manifest", opt.force);
+    if (!opt.certify.empty())
+        for (const char* sub : {"", "weak", "variants"})
+            check_output(std::filesystem::path(opt.certify) / sub / "manifest", opt.force);
     const auto t_all = std::chrono::steady_clock::now();
     nlohmann::json checks = nlohmann::json::array();
     int passed = 0, failed = 0, skipped = 0;
@@ -115,13 +116,13 @@ void run_verify(const VerifyOptions& opt) {
     }
     if (!ok) throw Exit{kCheckFailed};
     if (!opt.certify.empty()) {
-        // The checks passed: write what they established as certificates (elements and the
-        // 256 strong configurations) for the independent checker.
-        const CertifyResult result =
-            certify_library(ElementLibrary::load_default(), StrongRule(), std::filesystem::path(opt.certify));
+        // The checks passed: write what they established as certificates (elements, the strong
+        // and weak configurations, the crossing variants) for the independent checker.
+        const CertifyResult result = certify_library(ElementLibrary::load_default(), std::filesystem::path(opt.certify));
         if (!opt.json)
-            std::printf("certified: %zu certificates in %s (dualhex-proof-checker %s/manifest)\n", result.certificates,
-                        opt.certify.c_str(), opt.certify.c_str());
+            std::printf("certified: %zu certificates in %s (dualhex-proof-checker on %s/manifest, weak/manifest, "
+                        "variants/manifest)\n",
+                        result.certificates(), opt.certify.c_str(), opt.certify.c_str());
     }
 }
 
@@ -134,8 +135,8 @@ void register_verify(CLI::App& app) {
     sub->add_flag("--list", opt->list, "List the checks instead of running them");
     sub->add_option("--only", opt->only, "Run only checks whose name contains this text (repeatable)");
     sub->add_option("--certify", opt->certify,
-                    "After a passing run, write certificates (elements, the 256 strong configurations) into DIR");
-    sub->add_flag("--force", opt->force, "With --certify: overwrite an existing manifest in DIR");
+                    "After a passing run, write certificates (as `dualhex certify`) into DIR, DIR/weak, DIR/variants");
+    sub->add_flag("--force", opt->force, "With --certify: overwrite existing manifests");
     sub->callback([opt] { run_verify(*opt); });
 }
 

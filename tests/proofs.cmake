@@ -1,9 +1,14 @@
 # tests for proofs/: the shipped certificates, their freshness, the checker under mutation
 
-# The independent checker re-checks the shipped certificates (no dualhex code involved).
-add_test(NAME proofs_shipped_certificates
-  COMMAND dualhex-proof-checker ${PROJECT_SOURCE_DIR}/proofs/certificates/manifest)
-set_tests_properties(proofs_shipped_certificates PROPERTIES PASS_REGULAR_EXPRESSION "VERIFIED: ")
+# The independent checker re-checks the shipped certificates (no dualhex code involved), one
+# test per manifest: elements + strong tori, weak tori, crossing variants.
+function(dualhex_check_shipped name manifest)
+  add_test(NAME ${name} COMMAND dualhex-proof-checker ${PROJECT_SOURCE_DIR}/proofs/certificates/${manifest})
+  set_tests_properties(${name} PROPERTIES PASS_REGULAR_EXPRESSION "VERIFIED: ")
+endfunction()
+dualhex_check_shipped(proofs_shipped_certificates manifest)
+dualhex_check_shipped(proofs_shipped_weak_certificates weak/manifest)
+dualhex_check_shipped(proofs_shipped_variant_certificates variants/manifest)
 
 # Freshness (regenerate, compare with the manifest) and adversarial mutations.
 dualhex_add_test(test_proofs_certificates SOURCES test_proofs_certificates.cpp

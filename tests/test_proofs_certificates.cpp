@@ -64,17 +64,25 @@ CheckerRun run_checker(const std::string& args) {
 
 // ------------------------------------------------------------------ freshness
 TEST(ProofsCertificates, ShippedCertificatesAreCurrent) {
-    // Regenerate from the library and rule as they are now; the manifest (hash of every
+    // Regenerate from the library and rules as they are now; every manifest (hash of every
     // certificate file) must be byte-identical to the shipped one. If this fails, the
-    // elements or the rule changed: run `dualhex certify --out proofs/certificates --force`.
+    // elements or a rule changed: run `dualhex certify --out proofs/certificates --force`.
     const fs::path dir = temp_dir("fresh");
-    const CertifyResult result = certify_library(ElementLibrary::load_default(), StrongRule{}, dir);
-    EXPECT_EQ(result.configurations_covered, 256u);
-    EXPECT_EQ(read(dir / "manifest"), read(kShipped / "manifest"))
-        << "proofs/certificates is stale: regenerate with `dualhex certify --out proofs/certificates --force`";
-    for (const ManifestEntry& e : result.files) EXPECT_EQ(read(dir / e.file), read(kShipped / e.file)) << e.file;
-    const CheckerRun r = run_checker((dir / "manifest").string());
-    EXPECT_EQ(r.code, 0) << r.out;
+    const CertifyResult result = certify_library(ElementLibrary::load_default(), dir);
+    ASSERT_EQ(result.sets.size(), 3u);
+    EXPECT_EQ(result.sets[0].covers, 256);
+    EXPECT_EQ(result.sets[1].covers, 487);
+    EXPECT_EQ(result.sets[2].covers, 14);
+    for (const CertificateSet& set : result.sets) {
+        const fs::path shipped = kShipped / fs::relative(set.directory, dir);
+        EXPECT_EQ(read(set.directory / "manifest"), read(shipped / "manifest"))
+            << shipped << " is stale: regenerate with `dualhex certify --out proofs/certificates --force`";
+        for (const ManifestEntry& e : set.files) EXPECT_EQ(read(set.directory / e.file), read(shipped / e.file)) << e.file;
+        const CheckerRun r = run_checker((set.directory / "manifest").string());
+        EXPECT_EQ(r.code, 0) << r.out;
+        std::cout << "[ certified ] " << shipped << ": " << set.certificates << " certificates, " << set.bytes
+                  << " bytes, covers " << set.covers << '\n';
+    }
     fs::remove_all(dir);
 }
 
@@ -317,7 +325,8 @@ std::vector<std::pair<std::string, Cert>> mutations(const Cert& c, std::size_t s
         }
     }
     if (c.interior_all) {
-        for (std::size_t v = 0; v < c.pos.size(); v += 7) {
+        const std::size_t step = std::max<std::size_t>(7, c.pos.size() / 16);  // at most ~16 of them
+        for (std::size_t v = 0; v < c.pos.size(); v += step) {
             Cert m = c;  // drop one vertex from the identification "all interior"
             m.interior_all = false;
             for (std::size_t w = 0; w < c.pos.size(); ++w)
@@ -386,7 +395,7 @@ void check_mutations(const std::vector<Cert>& originals, const std::string& tag,
         ASSERT_TRUE(truth(c)) << "the unmutated certificate must be true";
         for (auto& [what, m] : mutations(c, stride)) {
             expected.emplace_back(what, truth(m));
-            text += serialize(m, "m" + std::to_string(expected.size()));
+            text += serialize(m, std::string("m").append(std::to_string(expected.size())));
         }
     }
     const fs::path dir = temp_dir(tag);
@@ -429,6 +438,13 @@ std::vector<std::string> split_certificates(const std::string& text) {
     return out;
 }
 
+void report(const Tally& tally) {
+    std::cout << "[ mutations ] tried " << tally.tried << ", rejected " << tally.rejected << ", accepted "
+              << tally.accepted << " (accepted only where the truth holds)\n";
+    for (const auto& [what, n] : tally.per_kind)
+        std::cout << "    " << what << ": " << n.first << " tried, " << n.second << " rejected\n";
+}
+
 TEST(ProofsCertificates, MutationsOfElementsAndConfigurations) {
     Tally tally;
     std::vector<Cert> elements;
@@ -447,14 +463,44 @@ TEST(ProofsCertificates, MutationsOfElementsAndConfigurations) {
         tori.push_back(parse(certificate_to_string(cc.complex, spec)));
     }
     check_mutations(tori, "tori", tally, 6);  // every 6th face and cell
-    std::cout << "[ mutations ] tried " << tally.tried << ", rejected " << tally.rejected << ", accepted "
-              << tally.accepted << " (accepted only where the truth holds)\n";
-    for (const auto& [what, n] : tally.per_kind)
-        std::cout << "    " << what << ": " << n.first << " tried, " << n.second << " rejected\n";
+    report(tally);
     EXPECT_GT(tally.rejected, 1000u);
     EXPECT_GT(tally.per_kind["rotate loop"].first, 0u);
     EXPECT_EQ(tally.per_kind["rotate loop"].second, 0u);
     EXPECT_EQ(tally.per_kind["reverse loop and uses"].second, 0u);
+    EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
+}
+
+// The shipped certificates of a set (every file of its manifest) whose text satisfies `keep`.
+std::vector<std::string> shipped_certificates(const fs::path& set, const std::function<bool(const std::string&)>& keep) {
+    std::vector<std::string> out;
+    std::istringstream manifest(read(set / "manifest"));
+    for (std::string line; std::getline(manifest, line);) {
+        if (line.rfind("file ", 0) != 0) continue;
+        const std::string file = line.substr(5, line.find(' ', 5) - 5);
+        for (const std::string& t : split_certificates(read(set / file)))
+            if (keep(t)) out.push_back(t);
+    }
+    return out;
+}
+
+TEST(ProofsCertificates, MutationsOfWeakAndVariantCertificates) {
+    Tally tally;
+    // the smallest weak torus with an MR element (three levels, a two-level jump at an edge)
+    const std::vector<std::string> weak = shipped_certificates(
+        kShipped / "weak", [](const std::string& t) { return t.find("-MR:") != std::string::npos; });
+    ASSERT_FALSE(weak.empty());
+    const auto shorter = [](const std::string& a, const std::string& b) { return a.size() < b.size(); };
+    check_mutations({parse(*std::min_element(weak.begin(), weak.end(), shorter))}, "weak", tally, 300);
+    // a variant the shipped library lacks, the concave corner XXY: as element, and installed
+    const std::vector<std::string> xxy = shipped_certificates(
+        kShipped / "variants", [](const std::string& t) { return t.find("corner-XXY\n") != std::string::npos; });
+    ASSERT_EQ(xxy.size(), 2u);  // elements.cert comes first in the manifest
+    check_mutations({parse(xxy[0])}, "variant-element", tally, 1);
+    check_mutations({parse(xxy[1])}, "variant-torus", tally, 30);
+    report(tally);
+    EXPECT_GT(tally.rejected, 1000u);
+    EXPECT_EQ(tally.per_kind["rotate loop"].second, 0u);
     EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
 }
 
@@ -527,6 +573,70 @@ TEST(ProofsCertificates, TruncationsAndManifestTampering) {
     EXPECT_EQ(run_checker((dir / "manifest").string()).code, 0);
     std::cout << "[ tampering ] tried " << tried << ", rejected " << rejected << '\n';
     fs::remove_all(dir);
+}
+
+// Tampering with a copy of a shipped set: its manifest, and covers lines inside a file (the
+// file's hash updated, so only the covers check can catch it). Returns {tried, rejected}.
+std::pair<std::size_t, std::size_t> tamper_with_set(const std::string& set) {
+    const fs::path dir = temp_dir("tamper-" + set);
+    fs::copy(kShipped / set, dir, fs::copy_options::recursive);
+    const std::string manifest = read(dir / "manifest");
+    std::size_t tried = 0, rejected = 0;
+    auto expect_reject = [&](const std::string& what, const std::string& m) {
+        write(dir / "manifest", m);
+        const CheckerRun r = run_checker((dir / "manifest").string());
+        ++tried;
+        rejected += r.code == 1 && r.out.find("VERIFIED") == std::string::npos;
+        EXPECT_EQ(r.code, 1) << set << ": " << what << "\n" << r.out;
+    };
+    auto replaced = [&](const std::string& from, const std::string& to) {
+        std::string m = manifest;
+        const auto p = m.find(from);
+        EXPECT_NE(p, std::string::npos) << from;
+        return p == std::string::npos ? m : m.replace(p, from.size(), to);
+    };
+    const long covers = std::stol(manifest.substr(manifest.find("\ncovers ") + 8));
+    expect_reject("covers N-1", replaced("covers " + std::to_string(covers), "covers " + std::to_string(covers - 1)));
+    expect_reject("covers N+1", replaced("covers " + std::to_string(covers), "covers " + std::to_string(covers + 1)));
+    expect_reject("total + 1", replaced("total ", "total 1"));
+    const auto last = manifest.rfind("\nfile ") + 1;
+    const std::string file_line = manifest.substr(last);  // the last line
+    expect_reject("file dropped", replaced(file_line, ""));
+    // the last covers line of the last file: a label dropped, another's label, its own label twice
+    std::istringstream ls(file_line);
+    std::string word, file, count, kind, algo, hash;
+    ls >> word >> file >> count >> kind >> algo >> hash;
+    const std::string body = read(dir / file);
+    const auto at = body.rfind("\ncovers ") + 1;
+    const std::string line = body.substr(at, body.find('\n', at) - at);
+    const std::string first = line.substr(7, line.find(' ', 7) - 7);
+    const std::string other = std::to_string(std::stol(first) == 0 ? covers - 1 : 0);
+    for (const std::string& edited : {line.substr(0, line.rfind(' ')), line + " " + other, line + " " + first}) {
+        if (edited == "covers") continue;  // a one-label line: dropping its label is "covers N+1"
+        const std::string tampered = std::string(body).replace(at, line.size(), edited);
+        write(dir / file, tampered);
+        expect_reject("covers line '" + edited.substr(0, 40) + "'", replaced(hash, fnv1a64_hex(tampered)));
+    }
+    write(dir / file, body);
+    for (std::size_t h = 0; (h = manifest.find("fnv1a64 ", h)) != std::string::npos;) {  // a digit of each hash
+        h += 8;
+        std::string m = manifest;
+        m[h] = m[h] == '0' ? '1' : '0';
+        expect_reject("hash digit", m);
+    }
+    write(dir / "manifest", manifest);
+    EXPECT_EQ(run_checker((dir / "manifest").string()).code, 0) << "the untampered copy must verify";
+    fs::remove_all(dir);
+    return {tried, rejected};
+}
+
+TEST(ProofsCertificates, WeakAndVariantManifestTampering) {
+    for (const char* set : {"weak", "variants"}) {
+        const auto [tried, rejected] = tamper_with_set(set);
+        std::cout << "[ tampering ] " << set << ": tried " << tried << ", rejected " << rejected << '\n';
+        EXPECT_EQ(rejected, tried);
+        EXPECT_GE(tried, 8u);
+    }
 }
 
 }  // namespace

@@ -5,13 +5,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <set>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "dualhex/checkers/periodic_configuration.hpp"
-#include "dualhex/schemes/element_library.hpp"
+#include "dualhex/schemes/signature_rule.hpp"
+#include "dualhex/schemes/weak_rule.hpp"
 #include "dualhex/topology/histograms.hpp"
 #include "dualhex/topology/incidence.hpp"
 
@@ -33,32 +32,6 @@ void write_histogram(std::ostream& out, const char* claim, const std::map<int, s
     out << "claim " << claim;
     for (const auto& [k, n] : h) out << ' ' << k << ':' << n;
     out << '\n';
-}
-
-// The cells of a complex as a set of sets of oriented faces, each face the loop of its
-// positions (shifted, modulo period) rotated to start at its smallest point: equal iff two
-// complexes are the same up to numbering.
-using CanonicalFace = std::vector<LatticePoint>;
-std::set<std::vector<CanonicalFace>> canonical_cells(const CellComplex& complex, const LatticePoint& shift,
-                                                     std::int64_t period) {
-    auto wrap = [&](const LatticePoint& p) {
-        LatticePoint q = p + shift;
-        for (int a = 0; a < 3; ++a) q[a] = ((q[a] % period) + period) % period;
-        return q;
-    };
-    std::set<std::vector<CanonicalFace>> cells;
-    for (std::size_t c = 0; c < complex.n_cells(); ++c) {
-        std::vector<CanonicalFace> faces;
-        for (HalfFaceHandle h : complex.cell_halffaces(CellHandle(c))) {
-            CanonicalFace loop;
-            for (VertexHandle v : complex.halfface_vertices(h)) loop.push_back(wrap(complex.position(v)));
-            std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
-            faces.push_back(std::move(loop));
-        }
-        std::sort(faces.begin(), faces.end());
-        cells.insert(std::move(faces));
-    }
-    return cells;
 }
 
 }  // namespace
@@ -166,82 +139,40 @@ ManifestEntry write_certificate_file(const std::filesystem::path& dir, const std
     return {file, certificates, kind, fnv1a64_hex(text)};
 }
 
-CertifyResult certify_library(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir) {
-    std::filesystem::create_directories(dir);
+CertificateSet::CertificateSet(std::filesystem::path dir, std::int64_t covers_labels)
+    : directory(std::move(dir)), covers(covers_labels) {
+    std::filesystem::create_directories(directory);
+}
+
+void CertificateSet::add(const std::string& file, const std::string& text, std::size_t n, CertificateKind kind) {
+    files.push_back(write_certificate_file(directory, file, text, n, kind));
+    certificates += n;
+    bytes += text.size();
+}
+
+void CertificateSet::write_manifest() const {
+    std::ofstream out(directory / "manifest", std::ios::binary | std::ios::trunc);
+    out << manifest_to_string(files, covers);
+    if (!out.flush()) throw std::runtime_error("cannot write " + (directory / "manifest").string());
+}
+
+std::size_t CertifyResult::certificates() const {
+    std::size_t n = 0;
+    for (const CertificateSet& s : sets) n += s.certificates;
+    return n;
+}
+
+std::size_t CertifyResult::bytes() const {
+    std::size_t n = 0;
+    for (const CertificateSet& s : sets) n += s.bytes;
+    return n;
+}
+
+CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir) {
     CertifyResult result;
-    auto add = [&](const std::string& file, const std::string& text, std::size_t n, CertificateKind kind) {
-        result.files.push_back(write_certificate_file(dir, file, text, n, kind));
-        result.certificates += n;
-        result.bytes += text.size();
-    };
-    std::string text;
-    for (const Element& e : library.elements()) {
-        CertificateSpec spec;
-        spec.name = e.name;
-        spec.kind = CertificateKind::Element;
-        spec.domain = CertificateDomain::box({0, 0, 0}, {e.leaf(), e.leaf(), e.leaf()});
-        spec.comments = {"element " + e.name + " (" + e.file.filename().string() + "): a subdivision of its leaf [0," +
-                         std::to_string(e.leaf()) + "]^3"};
-        text += certificate_to_string(e.complex, spec);
-    }
-    add("elements.cert", text, library.elements().size(), CertificateKind::Element);
-    // translation classes: m' = m with octant bits permuted by b -> b ^ t
-    auto translate_mask = [](int m, int t) {
-        int out = 0;
-        for (int b = 0; b < 8; ++b) out |= ((m >> (b ^ t)) & 1) << b;
-        return out;
-    };
-    std::vector<int> representatives;
-    for (int m = 0; m < 256; ++m) {
-        int rep = m;
-        for (int t = 1; t < 8; ++t) rep = std::min(rep, translate_mask(m, t));
-        if (rep == m) representatives.push_back(m);
-    }
-    constexpr std::size_t kPerFile = 12;
-    for (std::size_t first = 0; first < representatives.size(); first += kPerFile) {
-        const std::size_t last = std::min(first + kPerFile, representatives.size());
-        text.clear();
-        for (std::size_t r = first; r < last; ++r) {
-            const int rep = representatives[r];
-            const ConfigurationComplex cc = build_periodic_configuration(static_cast<std::uint8_t>(rep), rule, library);
-            const std::int64_t period = 4 * cc.unit;
-            const auto canonical = canonical_cells(cc.complex, {0, 0, 0}, period);
-            std::set<std::int64_t> members;
-            for (int t = 0; t < 8; ++t) {
-                const int m = translate_mask(rep, t);
-                if (!members.insert(m).second || m == rep) continue;
-                // torus(m) shifted by octant cubes t is torus(rep): octant b of m is octant b^t of rep
-                const ConfigurationComplex other = build_periodic_configuration(static_cast<std::uint8_t>(m), rule, library);
-                const LatticePoint shift{2 * cc.unit * (t & 1), 2 * cc.unit * ((t >> 1) & 1), 2 * cc.unit * ((t >> 2) & 1)};
-                if (canonical_cells(other.complex, shift, period) != canonical)
-                    throw std::runtime_error("certify: the torus of mask " + std::to_string(m) +
-                                             " is not the translate of the torus of mask " + std::to_string(rep));
-            }
-            CertificateSpec spec;
-            spec.name = "configuration-" + std::to_string(rep);
-            spec.kind = CertificateKind::Configuration;
-            spec.domain = CertificateDomain::torus(period);
-            spec.covers.assign(members.begin(), members.end());
-            result.configurations_covered += members.size();
-            std::string placed;
-            for (const PlacedLeaf& leaf : cc.coarse_leaves)
-                placed += " " + (leaf.placement ? leaf.placement->element : std::string("hex"));
-            spec.comments = {"rule " + rule.name() + ", mask " + std::to_string(rep) + " = " +
-                                 format_mask(static_cast<std::uint8_t>(rep)) +
-                                 " on the 3-torus of 2x2x2 octant cubes (period 4 coarse leaves = " +
-                                 std::to_string(period) + " lattice units)",
-                             "coarse leaves:" + placed,
-                             "covers: the masks whose tori are this complex translated by octant cubes"};
-            text += certificate_to_string(cc.complex, spec);
-        }
-        char file[64];
-        std::snprintf(file, sizeof file, "configurations-%03d-%03d.cert", representatives[first], representatives[last - 1]);
-        add(file, text, last - first, CertificateKind::Configuration);
-    }
-    const std::string manifest = manifest_to_string(result.files, 256);
-    std::ofstream out(dir / "manifest", std::ios::binary | std::ios::trunc);
-    out << manifest;
-    if (!out.flush()) throw std::runtime_error("cannot write " + (dir / "manifest").string());
+    result.sets.push_back(certify_strong(library, StrongRule{}, dir));
+    result.sets.push_back(certify_weak(library, WeakRule{}, dir / "weak"));
+    result.sets.push_back(certify_variants(library, dir / "variants"));
     return result;
 }
 

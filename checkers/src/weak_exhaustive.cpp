@@ -28,6 +28,10 @@ std::vector<LevelAssignment> weak_configurations() {
     return out;
 }
 
+std::function<int(int, int, int)> torus_levels(const LevelAssignment& levels) {
+    return [levels](int x, int y, int z) { return int(levels[(x & 1) | ((y & 1) << 1) | ((z & 1) << 2)]); };
+}
+
 LevelAssignment canonical(const LevelAssignment& levels) {
     // As two masks (level >= 1, level >= 2), each moved by grid's action on octant masks.
     ConfigMask at_least[2] = {0, 0};
@@ -53,8 +57,7 @@ WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const Eleme
         const LevelAssignment key = canonical(lv);
         classes.insert(key);
         if (*std::max_element(lv.begin(), lv.end()) == 2) three.insert(key);
-        const auto level = [&lv](int x, int y, int z) { return int(lv[(x & 1) | ((y & 1) << 1) | ((z & 1) << 2)]); };
-        const ConfigurationReport report = check_periodic_levels(level, 2, rule, library);
+        const ConfigurationReport report = check_periodic_levels(torus_levels(lv), 2, rule, library);
         std::array<int, 8> levels{};
         for (int b = 0; b < 8; ++b) levels[static_cast<std::size_t>(b)] = lv[static_cast<std::size_t>(b)];
         const ConfigurationReport window = check_window_levels(levels, rule, library);

@@ -90,22 +90,61 @@ struct ManifestEntry {
 ManifestEntry write_certificate_file(const std::filesystem::path& dir, const std::string& file, const std::string& text,
                                      std::size_t certificates, CertificateKind kind);
 
-/// The certificates of a rule and an element library (what `dualhex certify` writes):
-///   elements.cert                   one element certificate per library element
-///   configurations-AAA-BBB.cert     periodic tori, 12 per file (AAA..BBB: the masks named)
-///   manifest                        total and per-file counts, kinds and hashes, covers 256
-/// Translating the torus by one octant cube along the axes in t (t = 1..7) turns the torus
-/// of mask m into the torus of mask m' (bit b of m' = bit b^t of m): the 256 tori are 46
-/// complexes up to translation. One certificate is written per translation class (the
-/// smallest mask; `covers` lists the class), after checking here, for every other mask,
-/// that its torus as built IS the translate (same cells, same oriented faces, same
-/// positions); std::runtime_error if not (then the rule is not translation invariant).
-/// Creates `dir` if needed; overwrites those files. Throws what the builders throw.
-struct CertifyResult {
-    std::vector<ManifestEntry> files;
+/// One certificate directory with its own manifest (its own label space for `covers`).
+struct CertificateSet {
+    std::filesystem::path directory;
+    std::vector<ManifestEntry> files;  ///< in manifest order
     std::size_t certificates = 0, bytes = 0;
-    std::size_t configurations_covered = 0;  ///< 256
+    std::int64_t covers = -1;  ///< the manifest's `covers N`: labels 0..N-1 (-1: no line)
+
+    /// Creates the directory if needed.
+    explicit CertificateSet(std::filesystem::path dir, std::int64_t covers = -1);
+    /// Writes `text` (n certificates of one kind) to directory/file and records it.
+    void add(const std::string& file, const std::string& text, std::size_t n, CertificateKind kind);
+    /// Writes directory/manifest (total, covers, the files with their hashes).
+    void write_manifest() const;
 };
-CertifyResult certify_library(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir);
+
+/// Elements and strong tori, into `dir` (what proofs/certificates/ holds):
+///   elements.cert                   one element certificate per library element
+///   configurations-AAA-BBB.cert     periodic tori (build_periodic_configuration), 12 per file
+///   manifest                        covers 256 (the masks)
+/// Translating the torus by octant cubes turns the torus of mask m into the torus of another
+/// mask: the 256 tori are 46 complexes up to translation. One certificate is written per
+/// translation class (the smallest mask; `covers` lists the class) after checking, for every
+/// other mask, that its torus as built IS the translate (torus_classes.hpp);
+/// std::runtime_error if not (then the rule is not translation invariant).
+CertificateSet certify_strong(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir);
+
+/// The 487 weakly balanced assignments (weak_configurations() order = the labels), each on
+/// its torus (build_periodic_levels with 2x2x2 octant cubes), into `dir`:
+///   configurations-AAA-BBB.cert     one certificate per class under the 384 torus motions
+///                                   (cube symmetries and octant shifts; the smallest label
+///                                   represents it; `covers` lists the class and a comment
+///                                   the motion producing each member, checked as for
+///                                   certify_strong)
+///   manifest                        covers 487
+/// std::runtime_error if a torus is not closed with every vertex interior and in the period.
+CertificateSet certify_weak(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir);
+
+/// The 14 crossing variants (schemes/variants.hpp; labels in `dualhex variants` order: flat
+/// x z, concave edge LL LU UL UU, concave corner XXY .. ZYZ), into `dir`:
+///   elements.cert                   each variant as an element of [0,12]^3
+///   configurations.cert             each variant installed on its region's torus (as
+///                                   variants_report.hpp installs it), covers its label
+///   histograms.cert                 (only if some variant fails dualhex's own checks) the
+///                                   same as kind histogram: counts and histograms only
+///   manifest                        covers 14
+/// `library`: the shipped elements the variants are added to (its directory is reloaded).
+CertificateSet certify_variants(const ElementLibrary& library, const std::filesystem::path& dir);
+
+/// Everything `dualhex certify` writes: certify_strong (StrongRule) into `dir`,
+/// certify_weak (WeakRule) into dir/weak, certify_variants into dir/variants.
+struct CertifyResult {
+    std::vector<CertificateSet> sets;
+    [[nodiscard]] std::size_t certificates() const;
+    [[nodiscard]] std::size_t bytes() const;
+};
+CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir);
 
 }  // namespace dualhex

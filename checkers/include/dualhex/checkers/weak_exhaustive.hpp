@@ -9,6 +9,7 @@
 // where every vertex is interior, and the window around the application point
 // (build_window_levels, octants extended outward, inner vertices checked).
 #include <array>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,6 +25,9 @@ using LevelAssignment = std::array<std::uint8_t, 8>;
 
 /// All weakly balanced assignments with minimum level 0 (487), in a fixed order.
 [[nodiscard]] std::vector<LevelAssignment> weak_configurations();
+/// The assignment as build_periodic_levels' level function on the torus of 2x2x2 octant
+/// cubes (n_octants = 2): cube (x, y, z) is octant x | y << 1 | z << 2.
+[[nodiscard]] std::function<int(int, int, int)> torus_levels(const LevelAssignment& levels);
 /// The assignment's canonical form: the smallest image under the 48 symmetries.
 [[nodiscard]] LevelAssignment canonical(const LevelAssignment& levels);
 
