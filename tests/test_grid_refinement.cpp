@@ -205,3 +205,17 @@ RC_GTEST_PROP(GridPredicates, BalanceAgreesWithBruteForce, ()) {
     }
     RC_TAG(is_strongly_balanced(g).ok, is_weakly_balanced(g).ok);
 }
+
+// The oracle for is_paired: every leaf's 7 siblings are leaves, each looked up.
+RC_GTEST_PROP(GridPredicates, PairedAgreesWithBruteForce, ()) {
+    const LeafGrid raw = *gen_octree(4);
+    const LeafGrid g = *rc::gen::element(raw, pair_only(raw));
+    bool paired = true;
+    for (const Leaf& leaf : g.leaves())
+        if (leaf.level > 0)
+            for (const Leaf& sibling : children(parent(leaf))) paired = paired && g.find(sibling).has_value();
+    const auto check = is_paired(g);
+    RC_ASSERT(check.ok == paired);
+    if (!check.ok) RC_ASSERT(g.leaf(*check.second).level > g.leaf(*check.first).level);  // a finer leaf in a sibling
+    RC_TAG(paired);
+}

@@ -1,5 +1,8 @@
 #include "dualhex/grid/predicates.hpp"
 
+#include <algorithm>
+#include <array>
+
 namespace dualhex {
 
 namespace {
@@ -12,7 +15,7 @@ GridCheck failure(const LeafGrid& grid, std::size_t a, std::size_t b, std::strin
 
 // Paired, with about 2 lookups per leaf instead of 8: a leaf other than its parent's child 0
 // only needs child 0 to be a leaf, which in turn checks all its siblings. (Lookups are
-// cache misses on large grids.)
+// cache misses on large grids; the full pass below runs only to report a failure.)
 bool quickly_paired(const LeafGrid& grid) {
     for (const Leaf& leaf : grid.leaves()) {
         if (leaf.level == 0) continue;
@@ -31,7 +34,7 @@ bool quickly_paired(const LeafGrid& grid) {
 
 GridCheck is_paired(const LeafGrid& grid) {
     if (quickly_paired(grid)) return {};
-    for (std::size_t n = 0; n < grid.size(); ++n) {  // the first leaf in order with a subdivided sibling
+    for (std::size_t n = 0; n < grid.size(); ++n) {
         const Leaf& leaf = grid.leaf(n);
         if (leaf.level == 0) continue;
         for (const Leaf& sibling : children(parent(leaf))) {
@@ -56,23 +59,40 @@ std::size_t leaf_towards(const LeafGrid& grid, Leaf cell, const Offset& d) {
     }
 }
 
+// Balanced, with at most 7 lookups per interior node instead of up to 52: a cell of level
+// >= 1 is a node iff its parent is subdivided (a tiling covers every child of an interior
+// node), and the parents of a node's neighbours are its parent and at most 7 cells of the
+// 2x2x2 block around it. The full pass below runs only to report a failure.
+bool quickly_balanced(const LeafGrid& grid, Balance mode) {
+    for (const Leaf& node : grid.interior_nodes()) {
+        if (node.level == 0) continue;  // the root has no neighbour
+        std::array<Leaf, 8> checked{parent(node)};
+        std::size_t n_checked = 1;
+        for (const Offset& d : neighbour_offsets(mode)) {
+            const Leaf cell = neighbour(node, d);
+            if (!cell.valid()) continue;
+            const Leaf up = parent(cell);
+            if (std::find(checked.begin(), checked.begin() + n_checked, up) != checked.begin() + n_checked) continue;
+            if (!grid.is_subdivided(up)) return false;
+            checked[n_checked++] = up;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 // Balanced iff every interior node's same-level neighbours (through the contacts `mode`
 // constrains) are nodes too, not strictly inside a coarser leaf (see refinement.cpp).
 // One pass over interior nodes; a violation yields the pair (a leaf of the node nearest
-// the neighbour, the coarse leaf covering the neighbour), >= 2 levels apart. A neighbour
-// with the node's parent is a node (a tiling covers every child of an interior node), and
-// locate() tells a node (itself or nothing) from a cell inside a coarser leaf in one lookup.
+// the neighbour, the coarse leaf covering the neighbour), >= 2 levels apart.
 GridCheck is_balanced(const LeafGrid& grid, Balance mode) {
+    if (quickly_balanced(grid, mode)) return {};
     for (const Leaf& node : grid.interior_nodes()) {
-        const Leaf up = node.level > 0 ? parent(node) : node;  // the root has no valid neighbour
         for (const Offset& d : neighbour_offsets(mode)) {
             const Leaf cell = neighbour(node, d);
-            if (!cell.valid() || parent(cell) == up) continue;
-            const auto located = grid.locate(cell);
-            if (!located || grid.leaf(*located).level == cell.level) continue;
-            const std::size_t coarse = *located;
+            if (!cell.valid() || grid.find(cell) || grid.is_subdivided(cell)) continue;
+            const std::size_t coarse = *grid.locate(cell);
             const std::size_t fine = leaf_towards(grid, node, d);
             return failure(grid, fine, coarse, std::string(mode == Balance::Strong ? "not strongly" : "not weakly") +
                                                    " balanced: leaves " + grid.describe(fine) + " and " +
