@@ -69,10 +69,11 @@ TEST(ProofsCertificates, ShippedCertificatesAreCurrent) {
     // elements or a rule changed: run `dualhex certify --out proofs/certificates --force`.
     const fs::path dir = temp_dir("fresh");
     const CertifyResult result = certify_library(ElementLibrary::load_default(), dir);
-    ASSERT_EQ(result.sets.size(), 3u);
+    ASSERT_EQ(result.sets.size(), 4u);
     EXPECT_EQ(result.sets[0].covers, 256);
     EXPECT_EQ(result.sets[1].covers, 487);
     EXPECT_EQ(result.sets[2].covers, 14);
+    EXPECT_EQ(result.sets[3].covers, 36635);  // the compositional windows
     for (const CertificateSet& set : result.sets) {
         const fs::path shipped = kShipped / fs::relative(set.directory, dir);
         EXPECT_EQ(read(set.directory / "manifest"), read(shipped / "manifest"))
@@ -504,6 +505,20 @@ TEST(ProofsCertificates, MutationsOfWeakAndVariantCertificates) {
     EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
 }
 
+TEST(ProofsCertificates, MutationsOfCompositionalWindows) {
+    Tally tally;
+    // the largest window (most cells: several elements around g) and the smallest
+    const std::vector<std::string> windows = shipped_certificates(kShipped / "windows", [](const std::string&) { return true; });
+    ASSERT_EQ(windows.size(), 1397u);
+    const auto shorter = [](const std::string& a, const std::string& b) { return a.size() < b.size(); };
+    check_mutations({parse(*std::max_element(windows.begin(), windows.end(), shorter))}, "window-large", tally, 4);
+    check_mutations({parse(*std::min_element(windows.begin(), windows.end(), shorter))}, "window-small", tally, 1);
+    report(tally);
+    EXPECT_GT(tally.rejected, 200u);
+    EXPECT_EQ(tally.per_kind["rotate loop"].second, 0u);
+    EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
+}
+
 TEST(ProofsCertificates, TruncationsAndManifestTampering) {
     // a small manifest: the shipped elements and two tori (masks 0 and 1) in a second file
     const fs::path dir = temp_dir("manifest");
@@ -631,7 +646,7 @@ std::pair<std::size_t, std::size_t> tamper_with_set(const std::string& set) {
 }
 
 TEST(ProofsCertificates, WeakAndVariantManifestTampering) {
-    for (const char* set : {"weak", "variants"}) {
+    for (const char* set : {"weak", "variants", "windows"}) {
         const auto [tried, rejected] = tamper_with_set(set);
         std::cout << "[ tampering ] " << set << ": tried " << tried << ", rejected " << rejected << '\n';
         EXPECT_EQ(rejected, tried);

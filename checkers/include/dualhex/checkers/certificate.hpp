@@ -139,7 +139,8 @@ CertificateSet certify_weak(const ElementLibrary& library, const TransitionRule&
 CertificateSet certify_variants(const ElementLibrary& library, const std::filesystem::path& dir);
 
 /// Everything `dualhex certify` writes: certify_strong (StrongRule) into `dir`,
-/// certify_weak (WeakRule) into dir/weak, certify_variants into dir/variants.
+/// certify_weak (WeakRule) into dir/weak, certify_variants into dir/variants, certify_windows
+/// (StrongRule, window_certificates.hpp) into dir/windows.
 struct CertifyResult {
     std::vector<CertificateSet> sets;
     [[nodiscard]] std::size_t certificates() const;
