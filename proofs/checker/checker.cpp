@@ -367,7 +367,8 @@ Stats check(const Cert& c) {
                 int plane = -1;
                 for (int p = 0; p < 6 && plane < 0; ++p) {
                     bool on = true;
-                    for (int v : c.faces[f]) on = on && c.pos[v][p / 2] == (p % 2 ? c.hi : c.lo)[p / 2];
+                    const i64 side = p % 2 ? c.hi[p / 2] : c.lo[p / 2];  // not (p % 2 ? hi : lo)[..]: GCC 12 -O2 UBSan misreports it
+                    for (int v : c.faces[f]) on = on && c.pos[v][p / 2] == side;
                     if (on) plane = p;
                 }
                 if (face_cells[f].size() == 2) {
