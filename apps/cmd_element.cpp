@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "histogram_format.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/paper_table.hpp"
 #include "dualhex/topology/histograms.hpp"
@@ -23,12 +24,6 @@ struct ElementOptions {
 
 std::filesystem::path directory(const ElementOptions& opt) {
     return opt.dir.empty() ? default_elements_directory() : std::filesystem::path(opt.dir);
-}
-
-nlohmann::json histogram_json(const std::map<int, std::size_t>& h) {
-    nlohmann::json j = nlohmann::json::object();
-    for (const auto& [size, n] : h) j[std::to_string(size)] = n;
-    return j;
 }
 
 nlohmann::json paper_json(const std::optional<PaperRow>& row) {

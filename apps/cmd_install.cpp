@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "histogram_format.hpp"
 
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/checkers/install.hpp"
@@ -43,28 +44,6 @@ std::size_t non_hex_cells(const CellComplex& k) {
         n += hex ? 0 : 1;
     }
     return n;
-}
-
-template <class Map>
-nlohmann::json histogram_json(const Map& h) {
-    nlohmann::json j = nlohmann::json::object();
-    for (const auto& [k, v] : h) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, std::string>) j[k] = v;
-        else j[std::to_string(k)] = v;
-    }
-    return j;
-}
-
-template <class Map>
-std::string histogram_text(const Map& h) {
-    std::string s;
-    for (const auto& [k, v] : h) {
-        if (!s.empty()) s += ", ";
-        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, std::string>) s += k;
-        else s += std::to_string(k);
-        s += ": " + std::to_string(v);
-    }
-    return s.empty() ? "-" : s;
 }
 
 void run_install(const InstallOptionsCli& opt) {

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "histogram_format.hpp"
 
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/geometry/mesh_pipeline.hpp"
@@ -24,25 +25,6 @@ struct MeshOptionsCli {
     int max_depth = 6, smooth = 5;
     bool json = false, force = false;
 };
-
-template <class Map>
-nlohmann::json histogram_json(const Map& h) {
-    nlohmann::json j = nlohmann::json::object();
-    for (const auto& [k, v] : h) j[std::to_string(k)] = v;
-    return j;
-}
-
-template <class Map>
-std::string histogram_text(const Map& h) {
-    std::string s;
-    for (const auto& [k, v] : h) {
-        if (!s.empty()) s += ", ";
-        s += std::to_string(k);
-        s += ": ";
-        s += std::to_string(v);
-    }
-    return s.empty() ? "-" : s;
-}
 
 void run_mesh(const MeshOptionsCli& opt) {
     {  // before any work: the format and the overwrite check
