@@ -31,17 +31,6 @@ const ElementLibrary& flat_library() {
 
 constexpr std::uint8_t kFlatMask = 0b11001100;  // octant cubes with y in [2,4) fine
 
-// F in the right leaves but with x and z swapped (a reflection that keeps the leaf box)
-// in the leaves with d_x = -1: the two sides of the plane x = 0 disagree on the crossing.
-class SwappedCrossingRule : public TransitionRule {
-public:
-    std::optional<Placement> place(const LeafContext& ctx) const override {
-        auto p = FlatOnlyRule().place(ctx);
-        if (p && ctx.direction[0] < 0) p->symmetry = CubeSymmetry({2, 1, 0}, {1, 1, 1});
-        return p;
-    }
-};
-
 // F reflected everywhere (x <-> z): consistent, so still valid (the crossing choice is
 // harmless on a flat region).
 class AllSwappedRule : public TransitionRule {
@@ -151,13 +140,13 @@ TEST(CheckersPeriodic, ConsistentReflectionStillPasses) {
 }
 
 TEST(CheckersPeriodic, WrongReflectionFailsWithValenceViolations) {
-    const ConfigurationReport r = check_periodic_configuration(kFlatMask, SwappedCrossingRule(), flat_library());
+    const ConfigurationReport r = check_periodic_configuration(kFlatMask, testing::SwappedCrossingRule(), flat_library());
     ASSERT_TRUE(r.built) << r.error;
     EXPECT_FALSE(r.ok());
     EXPECT_GT(r.open_faces, 0U);  // the two sides of x = 0 do not match
     EXPECT_GT(r.validation.count(ViolationKind::VertexValence) + r.validation.count(ViolationKind::EdgeCellCount), 0U)
         << r.summary();
-    const ConfigurationReport w = check_cube_window(kFlatMask, SwappedCrossingRule(), flat_library());
+    const ConfigurationReport w = check_cube_window(kFlatMask, testing::SwappedCrossingRule(), flat_library());
     ASSERT_TRUE(w.built) << w.error;
     EXPECT_FALSE(w.ok());
     EXPECT_GT(w.validation.count(ViolationKind::VertexValence) + w.validation.count(ViolationKind::EdgeCellCount), 0U)

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include "dualhex/schemes/placement.hpp"
+
 namespace dualhex::testing {
 
 inline constexpr const char* kFlatElement = R"(# pinned copy of schemes/elements/F.element (a825e13)
@@ -73,5 +75,17 @@ inline std::filesystem::path write_flat_element_dir(const std::string& tag) {
     std::ofstream(dir / "F.element") << kFlatElement;
     return dir;
 }
+
+/// F in the right leaves, but with x and z swapped (a reflection that keeps the leaf box)
+/// where d_x = -1: the two sides of each plane x = const through application points
+/// disagree on the crossing, so installations must fail.
+class SwappedCrossingRule : public TransitionRule {
+public:
+    std::optional<Placement> place(const LeafContext& ctx) const override {
+        auto p = FlatOnlyRule().place(ctx);
+        if (p && ctx.direction[0] < 0) p->symmetry = CubeSymmetry({2, 1, 0}, {1, 1, 1});
+        return p;
+    }
+};
 
 }  // namespace dualhex::testing

@@ -106,19 +106,8 @@ TEST(CheckersInstall, ThreeLevelFlatGridScalesElements) {
     expect_all_hex(r);
 }
 
-// F with x and z swapped (a reflection keeping the leaf box) where d_x = -1: the two sides
-// of each plane x = const through application points disagree on the crossing.
-class SwappedCrossingRule : public TransitionRule {
-public:
-    std::optional<Placement> place(const LeafContext& ctx) const override {
-        auto p = FlatOnlyRule().place(ctx);
-        if (p && ctx.direction[0] < 0) p->symmetry = CubeSymmetry({2, 1, 0}, {1, 1, 1});
-        return p;
-    }
-};
-
 TEST(CheckersInstall, WrongReflectionIsCaught) {
-    const InstallResult r = install(flat_grid(2), SwappedCrossingRule(), flat_library(), {.outside_root = OutsideRoot::Mirror});
+    const InstallResult r = install(flat_grid(2), testing::SwappedCrossingRule(), flat_library(), {.outside_root = OutsideRoot::Mirror});
     const InstallVerification v = verify_installation(r);
     EXPECT_FALSE(v.ok());
     EXPECT_GT(v.open_faces, 0U);
