@@ -106,7 +106,10 @@ ClosestPoint AabbTree::closest_point(const Vector3d& p) const {
     return best;
 }
 
-bool AabbTree::intersects_box(const AlignedBox3d& box) const {
+// Calls visit(id) for every triangle overlapping the box until visit returns true;
+// returns whether it did.
+template <class Visit>
+bool AabbTree::box_walk(const AlignedBox3d& box, Visit&& visit) const {
     std::vector<int> stack{0};
     while (!stack.empty()) {
         const Node& node = nodes_[stack.back()];
@@ -116,7 +119,8 @@ bool AabbTree::intersects_box(const AlignedBox3d& box) const {
             for (int n = node.first; n < node.first + node.count; ++n) {
                 const auto& tri = surface_.triangles[order_[n]];
                 if (triangle_box_overlap(box, surface_.vertices[tri[0]], surface_.vertices[tri[1]],
-                                         surface_.vertices[tri[2]]))
+                                         surface_.vertices[tri[2]]) &&
+                    visit(order_[n]))
                     return true;
             }
             continue;
@@ -127,25 +131,16 @@ bool AabbTree::intersects_box(const AlignedBox3d& box) const {
     return false;
 }
 
+bool AabbTree::intersects_box(const AlignedBox3d& box) const {
+    return box_walk(box, [](int) { return true; });
+}
+
 std::vector<int> AabbTree::triangles_in_box(const AlignedBox3d& box) const {
     std::vector<int> out;
-    std::vector<int> stack{0};
-    while (!stack.empty()) {
-        const Node& node = nodes_[stack.back()];
-        stack.pop_back();
-        if (!node.box.intersects(box)) continue;
-        if (node.left < 0) {
-            for (int n = node.first; n < node.first + node.count; ++n) {
-                const auto& tri = surface_.triangles[order_[n]];
-                if (triangle_box_overlap(box, surface_.vertices[tri[0]], surface_.vertices[tri[1]],
-                                         surface_.vertices[tri[2]]))
-                    out.push_back(order_[n]);
-            }
-            continue;
-        }
-        stack.push_back(node.left);
-        stack.push_back(node.right);
-    }
+    box_walk(box, [&](int id) {
+        out.push_back(id);
+        return false;
+    });
     return out;
 }
 

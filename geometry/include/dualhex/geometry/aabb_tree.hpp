@@ -60,6 +60,8 @@ private:
     };
     int build(int first, int count);
     template <class Visit>
+    bool box_walk(const Eigen::AlignedBox3d& box, Visit&& visit) const;
+    template <class Visit>
     void ray_walk(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double t_max_init, Visit&& visit) const;
 
     TriangleSurface surface_;
