@@ -151,6 +151,23 @@ void CertificateSet::add(const std::string& file, const std::string& text, std::
     bytes += text.size();
 }
 
+void CertificateSet::add_ranges(const Ranges& ranges, std::size_t n, CertificateKind kind,
+                                const std::function<std::string(std::size_t)>& certificate,
+                                const std::function<std::size_t(std::size_t)>& name) {
+    std::string text;
+    std::size_t first = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+        text += certificate(r);
+        if (r + 1 < n && r + 1 - first < ranges.max_count && text.size() < ranges.max_bytes) continue;
+        char file[96];
+        std::snprintf(file, sizeof file, "%s-%0*zu-%0*zu.cert", ranges.prefix.c_str(), ranges.digits, name(first),
+                      ranges.digits, name(r));
+        add(file, text, r + 1 - first, kind);
+        text.clear();
+        first = r + 1;
+    }
+}
+
 void CertificateSet::write_manifest() const {
     std::ofstream out(directory / "manifest", std::ios::binary | std::ios::trunc);
     out << manifest_to_string(files, covers);

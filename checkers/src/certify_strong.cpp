@@ -1,5 +1,4 @@
 // certify_strong: the elements and the 256 strong tori as certificates (certificate.hpp).
-#include <cstdio>
 
 #include "assembly.hpp"
 #include "dualhex/checkers/certificate.hpp"
@@ -62,16 +61,10 @@ CertificateSet certify_strong(const ElementLibrary& library, const TransitionRul
     };
     const std::int64_t octant = 2 * detail::common_unit(library);
     const std::vector<TorusClass> classes = torus_classes(256, image, build, torus_translations(), octant);
-    constexpr std::size_t kPerFile = 12;
-    for (std::size_t first = 0; first < classes.size(); first += kPerFile) {
-        const std::size_t last = std::min(first + kPerFile, classes.size());
-        std::string text;
-        for (std::size_t r = first; r < last; ++r) text += torus_certificate(classes[r], rule, library);
-        char file[64];
-        std::snprintf(file, sizeof file, "configurations-%03zu-%03zu.cert", classes[first].representative,
-                      classes[last - 1].representative);
-        set.add(file, text, last - first, CertificateKind::Configuration);
-    }
+    set.add_ranges({.prefix = "configurations", .digits = 3, .max_count = 12}, classes.size(),
+                   CertificateKind::Configuration,
+                   [&](std::size_t r) { return torus_certificate(classes[r], rule, library); },
+                   [&](std::size_t r) { return classes[r].representative; });
     set.write_manifest();
     return set;
 }

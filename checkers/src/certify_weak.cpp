@@ -1,7 +1,6 @@
 // certify_weak: the 487 weakly balanced tori as certificates, one per class under the 384
 // torus motions (certificate.hpp, torus_classes.hpp).
 #include <algorithm>
-#include <cstdio>
 #include <map>
 
 #include "assembly.hpp"
@@ -70,19 +69,10 @@ CertificateSet certify_weak(const ElementLibrary& library, const TransitionRule&
     const std::vector<TorusClass> classes = torus_classes(all.size(), image, build, torus_motions(), octant);
 
     CertificateSet set(dir, static_cast<std::int64_t>(all.size()));
-    constexpr std::size_t kFileBytes = 512 * 1024;  // a file is closed once it holds this much
-    std::string text;
-    std::size_t first = 0;
-    for (std::size_t r = 0; r < classes.size(); ++r) {
-        text += weak_certificate(classes[r], all, rule, library, octant);
-        if (text.size() < kFileBytes && r + 1 < classes.size()) continue;
-        char file[64];
-        std::snprintf(file, sizeof file, "configurations-%03zu-%03zu.cert", classes[first].representative,
-                      classes[r].representative);
-        set.add(file, text, r + 1 - first, CertificateKind::Configuration);
-        text.clear();
-        first = r + 1;
-    }
+    set.add_ranges({.prefix = "configurations", .digits = 3, .max_bytes = 512 * 1024}, classes.size(),
+                   CertificateKind::Configuration,
+                   [&](std::size_t r) { return weak_certificate(classes[r], all, rule, library, octant); },
+                   [&](std::size_t r) { return classes[r].representative; });
     set.write_manifest();
     return set;
 }

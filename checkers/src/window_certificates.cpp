@@ -8,7 +8,6 @@
 // representative (exact lattice forms, variants::complex_form), or nothing is written.
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -118,26 +117,21 @@ CertificateSet certify_windows(const TransitionRule& rule, const ElementLibrary&
     if (!result.all_passed()) throw std::runtime_error("certify_windows: the enumeration does not pass");
 
     CertificateSet set(dir, label);
-    for (std::size_t first = 0; first < classes.size(); first += per_file) {
-        const std::size_t last = std::min(classes.size(), first + per_file) - 1;
-        std::string text;
-        for (std::size_t k = first; k <= last; ++k) {
-            const WindowClass& c = classes[k];
-            CertificateSpec spec;
-            spec.name = "window-" + std::to_string(k);
-            spec.kind = CertificateKind::Installation;
-            spec.domain = CertificateDomain::box({-c.unit, -c.unit, -c.unit}, {c.unit, c.unit, c.unit});
-            spec.comments = {"window B(g) = the 2x2x2 leaves around g, moved to the origin (proofs/README.md)",
-                             "representative: " + c.witness,
-                             "covers: the " + std::to_string(c.members.size()) +
-                                 " enumerated windows that are its images under the 48 symmetries about g"};
-            spec.covers = c.members;
-            text += certificate_to_string(c.complex, spec);
-        }
-        char name[64];
-        std::snprintf(name, sizeof name, "windows-%04zu-%04zu.cert", first, last);
-        set.add(name, text, last - first + 1, CertificateKind::Installation);
-    }
+    const auto certificate = [&](std::size_t k) {
+        const WindowClass& c = classes[k];
+        CertificateSpec spec;
+        spec.name = "window-" + std::to_string(k);
+        spec.kind = CertificateKind::Installation;
+        spec.domain = CertificateDomain::box({-c.unit, -c.unit, -c.unit}, {c.unit, c.unit, c.unit});
+        spec.comments = {"window B(g) = the 2x2x2 leaves around g, moved to the origin (proofs/README.md)",
+                         "representative: " + c.witness,
+                         "covers: the " + std::to_string(c.members.size()) +
+                             " enumerated windows that are its images under the 48 symmetries about g"};
+        spec.covers = c.members;
+        return certificate_to_string(c.complex, spec);
+    };
+    set.add_ranges({.prefix = "windows", .digits = 4, .max_count = per_file}, classes.size(),
+                   CertificateKind::Installation, certificate, [](std::size_t k) { return k; });
     set.write_manifest();
     return set;
 }

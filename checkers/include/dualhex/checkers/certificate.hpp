@@ -26,6 +26,7 @@
 //   covers N           (optional) the certificates' covers are exactly 0..N-1, once each
 //   file NAME COUNT KIND fnv1a64 HEX16
 #include <cstdint>
+#include <functional>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -101,6 +102,18 @@ struct CertificateSet {
     explicit CertificateSet(std::filesystem::path dir, std::int64_t covers = -1);
     /// Writes `text` (n certificates of one kind) to directory/file and records it.
     void add(const std::string& file, const std::string& text, std::size_t n, CertificateKind kind);
+    /// How add_ranges splits certificates into files: a file is closed after `max_count`
+    /// certificates or once its text reaches `max_bytes`, and named
+    /// "PREFIX-AAA-BBB.cert" with AAA, BBB = name(first), name(last) in `digits` digits.
+    struct Ranges {
+        std::string prefix;
+        int digits = 3;
+        std::size_t max_count = SIZE_MAX, max_bytes = SIZE_MAX;
+    };
+    /// Writes certificates 0..n-1 (certificate(i): its text) into range files.
+    void add_ranges(const Ranges& ranges, std::size_t n, CertificateKind kind,
+                    const std::function<std::string(std::size_t)>& certificate,
+                    const std::function<std::size_t(std::size_t)>& name);
     /// Writes directory/manifest (total, covers, the files with their hashes).
     void write_manifest() const;
 };
