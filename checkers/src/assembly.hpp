@@ -138,6 +138,27 @@ void emit(ComplexBuilder& builder, const ElementTemplate& t, const LatticePoint&
         loop, halffaces);
 }
 
+/// Emits the rule's choice for a leaf of `size` lattice units with min corner `corner`:
+/// its element about `origin` (the context's application point in lattice units) scaled by
+/// size / unit, or a plain hex. Returns the placement (nullopt: the hex). Throws what the
+/// rule throws, and for an unknown element or a symmetry that leaves the leaf box.
+template <class Wrap>
+std::optional<Placement> emit_rule_leaf(ComplexBuilder& builder, TemplateCache& cache, const TransitionRule& rule,
+                                        const LeafContext& context, const LatticePoint& origin,
+                                        const LatticePoint& corner, std::int64_t size, Wrap&& wrap,
+                                        std::vector<VertexHandle>& vertices, std::vector<VertexHandle>& loop,
+                                        std::vector<HalfFaceHandle>& halffaces) {
+    std::optional<Placement> placement = rule.place(context);
+    if (!placement) {
+        emit(builder, cache.hex(size), corner, 1, wrap, vertices, loop, halffaces);
+        return placement;
+    }
+    check_placement_symmetry(*placement);
+    const ElementTemplate& t = cache.placed(cache.element_index(placement->element), world_symmetry(context, *placement));
+    emit(builder, t, origin, size / cache.unit(), wrap, vertices, loop, halffaces);
+    return placement;
+}
+
 /// Boundary faces (one cell) that do not lie on the domain's boundary are holes:
 /// `validate` treats them as boundary, so their vertices/edges escape the interior checks.
 /// Checks those vertices (6 edges) and edges (4 cells) that `accept` admits, adding

@@ -219,15 +219,8 @@ ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, co
             continue;
         }
         PlacedLeaf placed{leaf, detail::coarse_leaf_context(leaf, fine), std::nullopt};
-        placed.placement = rule.place(placed.context);
-        if (placed.placement) {
-            detail::check_placement_symmetry(*placed.placement);
-            const int e = cache.element_index(placed.placement->element);
-            const auto& tmpl = cache.placed(e, world_symmetry(placed.context, *placed.placement));
-            detail::emit(builder, tmpl, placed.context.application_point * U, 1, wrap, vs, loop, hfs);
-        } else {
-            detail::emit(builder, cache.hex(U), leaf * U, 1, wrap, vs, loop, hfs);
-        }
+        placed.placement = detail::emit_rule_leaf(builder, cache, rule, placed.context,
+                                                  placed.context.application_point * U, leaf * U, U, wrap, vs, loop, hfs);
         out.coarse_leaves.push_back(std::move(placed));
     }
     out.complex = std::move(builder).build();

@@ -71,7 +71,6 @@ ConfigurationComplex assemble(std::uint8_t mask, const std::vector<Index3>& octa
     std::vector<VertexHandle> vs, loop;
     std::vector<HalfFaceHandle> hfs;
     const detail::ElementTemplate& fine_hex = cache.hex(U / 2);
-    const detail::ElementTemplate& coarse_hex = cache.hex(U);
     for (const Index3& o : octants) {
         const LatticePoint lo{2 * o[0], 2 * o[1], 2 * o[2]};
         if (fine(o)) {
@@ -86,16 +85,8 @@ ConfigurationComplex assemble(std::uint8_t mask, const std::vector<Index3>& octa
             PlacedLeaf leaf;
             leaf.leaf = lo + LatticePoint{c & 1, (c >> 1) & 1, (c >> 2) & 1};
             leaf.context = detail::coarse_leaf_context(leaf.leaf, fine);
-            const LeafContext& ctx = leaf.context;
-            leaf.placement = rule.place(ctx);
-            if (leaf.placement) {
-                detail::check_placement_symmetry(*leaf.placement);
-                const int e = cache.element_index(leaf.placement->element);
-                const detail::ElementTemplate& t = cache.placed(e, world_symmetry(ctx, *leaf.placement));
-                detail::emit(builder, t, ctx.application_point * U, 1, wrap, vs, loop, hfs);
-            } else {
-                detail::emit(builder, coarse_hex, leaf.leaf * U, 1, wrap, vs, loop, hfs);
-            }
+            leaf.placement = detail::emit_rule_leaf(builder, cache, rule, leaf.context, leaf.context.application_point * U,
+                                                    leaf.leaf * U, U, wrap, vs, loop, hfs);
             out.coarse_leaves.push_back(std::move(leaf));
         }
     }
@@ -192,15 +183,8 @@ ConfigurationComplex assemble_levels(int first, int n_octants, LevelAt&& level_a
                         }
                         if (level_at(w) > lv + 1) ctx.set_two_finer_across_edge(a);
                     }
-                    leaf.placement = rule.place(ctx);
-                    if (leaf.placement) {
-                        detail::check_placement_symmetry(*leaf.placement);
-                        const int e = cache.element_index(leaf.placement->element);
-                        const detail::ElementTemplate& t = cache.placed(e, world_symmetry(ctx, *leaf.placement));
-                        detail::emit(builder, t, ctx.application_point, size / U, wrap, vs, loop, hfs);
-                    } else {
-                        detail::emit(builder, cache.hex(size), at, 1, wrap, vs, loop, hfs);
-                    }
+                    leaf.placement = detail::emit_rule_leaf(builder, cache, rule, ctx, ctx.application_point, at, size,
+                                                            wrap, vs, loop, hfs);
                     out.coarse_leaves.push_back(std::move(leaf));
                 }
             }
