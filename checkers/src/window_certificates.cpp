@@ -26,22 +26,21 @@ int position(const std::array<std::int64_t, 3>& m) {
     return static_cast<int>((m[0] + 1) | (m[1] + 1) << 1 | (m[2] + 1) << 2);
 }
 
-class Stabilisers {
+// A placed element's code: its element and its world symmetry W taken modulo the element's
+// own symmetries (the smallest index among W.S, S in its stabiliser).
+class PlacementCodes {
 public:
-    explicit Stabilisers(const ElementLibrary& library) : library_(&library) {}
-    // The smallest symmetry index among W.S, S in e's stabiliser.
-    int canonical(const std::string& element, const CubeSymmetry& W) {
+    explicit PlacementCodes(const ElementLibrary& library) : library_(&library) {}
+    int code(const std::string& element, const CubeSymmetry& W) {
         auto it = stabiliser_.find(element);
         if (it == stabiliser_.end()) {
             const CellComplex& e = library_->at(element).complex;
             it = stabiliser_.emplace(element, variants::symmetries_mapping(e, e)).first;
+            names_.emplace(element, static_cast<int>(names_.size()));
         }
-        int best = 48;
+        int best = CubeSymmetry::kOrder;
         for (const CubeSymmetry& S : it->second) best = std::min(best, W.compose(S).index());
-        return best;
-    }
-    int element_index(const std::string& element) {
-        return names_.emplace(element, static_cast<int>(names_.size())).first->second;
+        return names_.at(element) * CubeSymmetry::kOrder + best;
     }
 
 private:
@@ -51,28 +50,24 @@ private:
 };
 
 // The window's key under symmetry s about g (s = identity: as built).
-Key image_key(const CompositionalWindow& w, const CubeSymmetry& s, Stabilisers& stab) {
+Key image_key(const CompositionalWindow& w, const CubeSymmetry& s, PlacementCodes& codes) {
     const LatticePoint g{w.parity[0], w.parity[1], w.parity[2]};
     Key key;
     key.fill(kFine);  // positions without a coarse leaf hold 8 fine hexes
     for (const PlacedLeaf& leaf : w.built->coarse_leaves) {
-        std::array<std::int64_t, 3> lo{1, 1, 1};  // the image box's min corner
+        std::array<std::int64_t, 3> lo{1, 1, 1};  // the image box's min corner (the window is [-1, 1]^3)
         for (int c = 0; c < 8; ++c) {
             const LatticePoint img = s.apply(leaf.leaf - g + LatticePoint{c & 1, (c >> 1) & 1, (c >> 2) & 1});
             for (int a = 0; a < 3; ++a) lo[static_cast<std::size_t>(a)] = std::min(lo[static_cast<std::size_t>(a)], img[a]);
         }
-        int code = kHex;
-        if (leaf.placement) {
-            const CubeSymmetry W = s.compose(world_symmetry(leaf.context, *leaf.placement));
-            code = stab.element_index(leaf.placement->element) * 48 + stab.canonical(leaf.placement->element, W);
-        }
-        key[static_cast<std::size_t>(position(lo))] = code;
+        key[static_cast<std::size_t>(position(lo))] =
+            leaf.placement ? codes.code(leaf.placement->element, s.compose(world_symmetry(leaf.context, *leaf.placement)))
+                           : kHex;
     }
     return key;
 }
 
 struct WindowClass {
-    std::size_t index = 0;
     std::string witness;
     variants::ComplexForm form;  // complex_form(representative, symmetry giving the key)
     CellComplex complex;
@@ -84,7 +79,7 @@ struct WindowClass {
 
 CertificateSet certify_windows(const TransitionRule& rule, const ElementLibrary& library, const std::filesystem::path& dir,
                                std::size_t per_file) {
-    Stabilisers stab(library);
+    PlacementCodes codes(library);
     std::map<Key, std::size_t> class_of;
     std::vector<WindowClass> classes;
     std::int64_t label = 0;
@@ -95,13 +90,12 @@ CertificateSet certify_windows(const TransitionRule& rule, const ElementLibrary&
         CubeSymmetry best_s;
         for (int i = 0; i < CubeSymmetry::kOrder; ++i) {
             const CubeSymmetry s = CubeSymmetry::from_index(i);
-            const Key k = image_key(w, s, stab);
+            const Key k = image_key(w, s, codes);
             if (i == 0 || k < best) best = k, best_s = s;
         }
         const auto [it, fresh] = class_of.emplace(best, classes.size());
         if (fresh) {
             WindowClass c;
-            c.index = classes.size();
             c.witness = describe_window(w);
             c.form = variants::complex_form(w.built->complex, best_s);
             c.complex = w.built->complex;
