@@ -69,8 +69,7 @@ SurfaceFacts surface_facts(const dualhex::geometry::TriangleSurface& s) {
 
 void print_header() {
     std::printf("%-20s %7s %7s %6s %6s %5s %7s %7s %6s %5s %5s %4s %7s %7s %4s %6s\n", "mesh", "hexes", "minSJ",
-                "<0.3%", "<0.5%", "inv", "mean%", "max%", "on%", "nmE", "nmV", "comp", "bcomp", "chi", "maxV",
-                "sing%");
+                "<0.3%", "<0.5%", "inv", "mean%", "max%", "on%", "nmE", "nmV", "comp", "bcomp", "chi", "maxV", "sing%");
 }
 
 struct Box {
@@ -124,7 +123,8 @@ int measure(const std::string& mesh_path, const std::string& surface_path, std::
     const TriangleGrid to_surface(s.triangles), to_mesh(boundary);
     const OneWay out = one_way(boundary, to_surface, spacing), back = one_way(s.triangles, to_mesh, spacing);
     std::size_t on = 0;
-    for (auto v : boundary_vertices) on += to_surface.distance(g.points[static_cast<std::size_t>(v)]) <= 1e-6 * s.diagonal;
+    for (auto v : boundary_vertices)
+        on += to_surface.distance(g.points[static_cast<std::size_t>(v)]) <= 1e-6 * s.diagonal;
     std::size_t interior = 0, singular = 0;
     int max_valence = 0;
     for (const auto& [valence, n] : t.interior_valences) {
@@ -134,13 +134,15 @@ int measure(const std::string& mesh_path, const std::string& surface_path, std::
     }
     const auto pct = [](double part, double whole) { return whole > 0 ? 100.0 * part / whole : 0.0; };
     const double nh = static_cast<double>(g.hexes.size());
-    std::printf("%-20s %7zu %7.3f %6.2f %6.2f %5zu %7.3f %7.3f %6.1f %5zu %5zu %4zu %3zu/%-3zu %3lld/%-3lld %4d %6.2f\n",
-                name.c_str(), g.hexes.size(), min_sj, pct(static_cast<double>(below03), nh),
-                pct(static_cast<double>(below05), nh), inverted, pct(0.5 * (out.mean + back.mean), s.diagonal),
-                pct(std::max(out.max, back.max), s.diagonal), pct(static_cast<double>(on), static_cast<double>(boundary_vertices.size())),
-                t.non_manifold_edges, t.non_manifold_vertices, t.components, t.boundary_components, s.components,
-                static_cast<long long>(t.boundary_euler), static_cast<long long>(s.euler), max_valence,
-                pct(static_cast<double>(singular), static_cast<double>(interior)));
+    std::printf(
+        "%-20s %7zu %7.3f %6.2f %6.2f %5zu %7.3f %7.3f %6.1f %5zu %5zu %4zu %3zu/%-3zu %3lld/%-3lld %4d %6.2f\n",
+        name.c_str(), g.hexes.size(), min_sj, pct(static_cast<double>(below03), nh),
+        pct(static_cast<double>(below05), nh), inverted, pct(0.5 * (out.mean + back.mean), s.diagonal),
+        pct(std::max(out.max, back.max), s.diagonal),
+        pct(static_cast<double>(on), static_cast<double>(boundary_vertices.size())), t.non_manifold_edges,
+        t.non_manifold_vertices, t.components, t.boundary_components, s.components,
+        static_cast<long long>(t.boundary_euler), static_cast<long long>(s.euler), max_valence,
+        pct(static_cast<double>(singular), static_cast<double>(interior)));
     return 0;
 }
 

@@ -37,15 +37,14 @@ inline double triangle_distance2(const Vec3& p, const Triangle& t) {
     const double n2 = dot(n, n);
     if (n2 > 0) {
         bool inside = true;  // p's projection on the same side of all three edges as the triangle
-        for (int i = 0; i < 3; ++i)
-            inside = inside && dot(cross(t[(i + 1) % 3] - t[i], p - t[i]), n) >= 0;
+        for (int i = 0; i < 3; ++i) inside = inside && dot(cross(t[(i + 1) % 3] - t[i], p - t[i]), n) >= 0;
         if (inside) {
             const double h = dot(p - t[0], n);
             return h * h / n2;
         }
     }
-    return std::min({segment_distance2(p, t[0], t[1]), segment_distance2(p, t[1], t[2]),
-                     segment_distance2(p, t[2], t[0])});
+    return std::min(
+        {segment_distance2(p, t[0], t[1]), segment_distance2(p, t[1], t[2]), segment_distance2(p, t[2], t[0])});
 }
 
 class TriangleGrid {
@@ -78,8 +77,10 @@ public:
                     for (int j = from[1]; j <= to[1]; ++j)
                         for (int i = from[0]; i <= to[0]; ++i) {
                             const std::size_t c = cell_id(i, j, k);
-                            if (pass == 0) ++start_[c + 1];
-                            else items_[fill[c]++] = static_cast<std::uint32_t>(t);
+                            if (pass == 0)
+                                ++start_[c + 1];
+                            else
+                                items_[fill[c]++] = static_cast<std::uint32_t>(t);
                         }
             }
             if (pass == 0)
@@ -124,7 +125,9 @@ private:
         return std::clamp(static_cast<int>(std::floor((x - axis(lo_, a)) / cell_)), 0, n_[a] - 1);
     }
     [[nodiscard]] std::size_t cell_id(int i, int j, int k) const {
-        return static_cast<std::size_t>(i) + static_cast<std::size_t>(n_[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(n_[1]) * static_cast<std::size_t>(k));
+        return static_cast<std::size_t>(i) +
+               static_cast<std::size_t>(n_[0]) *
+                   (static_cast<std::size_t>(j) + static_cast<std::size_t>(n_[1]) * static_cast<std::size_t>(k));
     }
     std::vector<Triangle> tris_;
     Vec3 lo_, hi_;
@@ -137,8 +140,8 @@ private:
 // Points on a triangle: the barycentric grid with `n` steps per edge (corners included).
 template <class Visit>
 void sample_triangle(const Triangle& t, double spacing, Visit&& visit) {
-    const double longest = std::sqrt(std::max({dot(t[1] - t[0], t[1] - t[0]), dot(t[2] - t[1], t[2] - t[1]),
-                                               dot(t[0] - t[2], t[0] - t[2])}));
+    const double longest = std::sqrt(
+        std::max({dot(t[1] - t[0], t[1] - t[0]), dot(t[2] - t[1], t[2] - t[1]), dot(t[0] - t[2], t[0] - t[2])}));
     const int n = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 32);
     for (int i = 0; i <= n; ++i)
         for (int j = 0; i + j <= n; ++j)

@@ -78,9 +78,9 @@ inline Edge edge_of(std::int64_t a, std::int64_t b) { return a < b ? Edge{a, b} 
 struct Topology {
     std::vector<Quad> boundary;  // quads of faces in exactly one hex (cyclic corner order)
     std::size_t non_manifold_edges = 0, non_manifold_vertices = 0;
-    std::size_t components = 0;           // face-connected hex classes
-    std::size_t boundary_components = 0;  // vertex-connected boundary quad classes
-    std::int64_t boundary_euler = 0;      // V - E + F of all boundary quads
+    std::size_t components = 0;                    // face-connected hex classes
+    std::size_t boundary_components = 0;           // vertex-connected boundary quad classes
+    std::int64_t boundary_euler = 0;               // V - E + F of all boundary quads
     std::map<int, std::size_t> interior_valences;  // hexes at an interior edge -> edges
 };
 
@@ -93,7 +93,9 @@ inline Topology measure_topology(const HexGrid& g) {
             for (int side = 0; side < 2; ++side) {
                 Quad q{};
                 const auto fc = face_corners(axis, side);
-                for (int i = 0; i < 4; ++i) q[static_cast<std::size_t>(i)] = g.hexes[h][static_cast<std::size_t>(fc[static_cast<std::size_t>(i)])];
+                for (int i = 0; i < 4; ++i)
+                    q[static_cast<std::size_t>(i)] =
+                        g.hexes[h][static_cast<std::size_t>(fc[static_cast<std::size_t>(i)])];
                 Quad key = q;
                 std::sort(key.begin(), key.end());
                 faces[key].push_back(h);
@@ -110,7 +112,8 @@ inline Topology measure_topology(const HexGrid& g) {
     std::map<std::int64_t, std::vector<std::size_t>> quads_at_vertex;
     for (std::size_t q = 0; q < t.boundary.size(); ++q)
         for (int i = 0; i < 4; ++i) {
-            ++quads_at_edge[edge_of(t.boundary[q][static_cast<std::size_t>(i)], t.boundary[q][static_cast<std::size_t>((i + 1) % 4)])];
+            ++quads_at_edge[edge_of(t.boundary[q][static_cast<std::size_t>(i)],
+                                    t.boundary[q][static_cast<std::size_t>((i + 1) % 4)])];
             quads_at_vertex[t.boundary[q][static_cast<std::size_t>(i)]].push_back(q);
         }
     for (const auto& [e, n] : quads_at_edge) t.non_manifold_edges += n != 2;
@@ -138,10 +141,12 @@ inline Topology measure_topology(const HexGrid& g) {
     }
     Dsu pieces(g.points.size());
     for (const auto& q : t.boundary)
-        for (int i = 1; i < 4; ++i) pieces.join(static_cast<std::size_t>(q[0]), static_cast<std::size_t>(q[static_cast<std::size_t>(i)]));
-    for (const auto& [v, qs] : quads_at_vertex) t.boundary_components += pieces.root(static_cast<std::size_t>(v)) == static_cast<std::size_t>(v);
-    t.boundary_euler = static_cast<std::int64_t>(quads_at_vertex.size()) - static_cast<std::int64_t>(quads_at_edge.size()) +
-                       static_cast<std::int64_t>(t.boundary.size());
+        for (int i = 1; i < 4; ++i)
+            pieces.join(static_cast<std::size_t>(q[0]), static_cast<std::size_t>(q[static_cast<std::size_t>(i)]));
+    for (const auto& [v, qs] : quads_at_vertex)
+        t.boundary_components += pieces.root(static_cast<std::size_t>(v)) == static_cast<std::size_t>(v);
+    t.boundary_euler = static_cast<std::int64_t>(quads_at_vertex.size()) -
+                       static_cast<std::int64_t>(quads_at_edge.size()) + static_cast<std::int64_t>(t.boundary.size());
 
     std::map<Edge, int> hexes_at_edge;
     for (const auto& h : g.hexes)

@@ -123,7 +123,8 @@ inline HexGrid read_vtk_hexes(const std::string& path) {
     (void)in.integer("cell list size");
     g.hexes.resize(static_cast<std::size_t>(cells));
     for (std::int64_t c = 0; c < cells; ++c) {
-        if (in.integer("corner count") != 8) throw in.error("cell " + std::to_string(c) + " is not a hexahedron (not 8 corners)");
+        if (in.integer("corner count") != 8)
+            throw in.error("cell " + std::to_string(c) + " is not a hexahedron (not 8 corners)");
         for (auto& v : g.hexes[static_cast<std::size_t>(c)]) {
             v = in.integer("point id");
             if (v < 0 || v >= static_cast<std::int64_t>(g.points.size()))

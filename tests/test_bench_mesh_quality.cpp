@@ -63,13 +63,16 @@ TEST(BenchMeshQuality, HandCountedTopology) {
     EXPECT_EQ(edge.nm_vertices, 2u);
     EXPECT_EQ(edge.components, 2u);
     EXPECT_EQ(edge.chi, "3/2");
-    const Row vertex = measure(dir, pick(hex_block(2, 2, 2), [](int i, int j, int k) { return i == j && j == k; }), "vertex");
+    const Row vertex =
+        measure(dir, pick(hex_block(2, 2, 2), [](int i, int j, int k) { return i == j && j == k; }), "vertex");
     EXPECT_EQ(vertex.nm_edges, 0u);
     EXPECT_EQ(vertex.nm_vertices, 1u);
-    const Row ring = measure(dir, pick(hex_block(3, 3, 2), [](int i, int j, int) { return !(i == 1 && j == 1); }), "ring");
+    const Row ring =
+        measure(dir, pick(hex_block(3, 3, 2), [](int i, int j, int) { return !(i == 1 && j == 1); }), "ring");
     EXPECT_EQ(ring.nm_edges + ring.nm_vertices, 0u);
     EXPECT_EQ(ring.chi, "0/2");
-    const Row hollow = measure(dir, pick(hex_block(3, 3, 3), [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }), "hollow");
+    const Row hollow = measure(
+        dir, pick(hex_block(3, 3, 3), [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }), "hollow");
     EXPECT_EQ(hollow.boundary_components, "2/1");
     EXPECT_EQ(hollow.chi, "4/2");
     HexMesh cube = hex_block(2, 2, 2, 0.5).mesh;
@@ -84,8 +87,9 @@ TEST(BenchMeshQuality, HandCountedTopology) {
 TEST(BenchMeshQuality, BadFilesNameFileAndLine) {
     const TempDir dir;
     const std::string cube = write_text(dir.file("cube.off"), off_text(unit_cube_surface()));
-    const std::string head = "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n"
-                             "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";
+    const std::string head =
+        "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n"
+        "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";
     const std::vector<std::pair<std::string, std::string>> cases = {
         {head + "CELLS 1 9\n8 0 1 2 3 4 5 6 9\nCELL_TYPES 1\n12\n", ":15: cell 0: point id 9 out of range"},
         {head + "CELLS 1 9\n8 0 1 2 3 4 5 6 7\nCELL_TYPES 1\n10\n", ":17: cell 0 has a cell type other than 12"},
