@@ -187,6 +187,8 @@ TEST(SurfaceTopology, ComparisonOfMeshAndSurface) {
     const auto cube = surface_topology(unit_cube_surface());
     const auto same = compare_topology(ring.boundary_components, torus);
     EXPECT_TRUE(same.same) << same.describe();
+    EXPECT_TRUE(compare_topology(ring, default_shape()).same);
+    EXPECT_FALSE(compare_topology(ring, unit_cube_surface()).same);
     const auto differ = compare_topology(ring.boundary_components, cube);
     EXPECT_FALSE(differ.same);
     EXPECT_EQ(differ.describe(), "boundary chi {0} vs surface chi {2} (differ)");

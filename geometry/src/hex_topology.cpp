@@ -316,6 +316,10 @@ TopologyComparison compare_topology(const std::vector<SurfaceComponent>& mesh_bo
     return c;
 }
 
+TopologyComparison compare_topology(const HexTopology& mesh, const TriangleSurface& surface) {
+    return compare_topology(mesh.boundary_components, surface_topology(surface));
+}
+
 std::string TopologyComparison::describe() const {
     const auto set = [](const std::vector<std::int64_t>& v) {
         std::string s = "{";

@@ -146,5 +146,7 @@ struct TopologyComparison {
 };
 [[nodiscard]] TopologyComparison compare_topology(const std::vector<SurfaceComponent>& mesh_boundary,
                                                   const std::vector<SurfaceComponent>& surface);
+/// The mesh's boundary components against those of the surface it should match.
+[[nodiscard]] TopologyComparison compare_topology(const HexTopology& mesh, const TriangleSurface& surface);
 
 }  // namespace dualhex::geometry
