@@ -16,7 +16,7 @@ if(DUALHEX_PYTHON3)
   set_tests_properties(geometry_meshio_readback PROPERTIES SKIP_RETURN_CODE 77)
 endif()
 dualhex_add_test(test_geometry_quality SOURCES test_geometry_quality.cpp DEPS dualhex::geometry)
-dualhex_add_test(test_geometry_hex_topology SOURCES test_geometry_hex_topology.cpp DEPS dualhex::geometry)
+dualhex_add_test(test_geometry_hex_topology SOURCES test_geometry_hex_topology.cpp DEPS dualhex::geometry dualhex::mesher)  # mesher: the default torus
 dualhex_add_test(test_geometry_manifold_repair SOURCES test_geometry_manifold_repair.cpp DEPS dualhex::geometry)
 dualhex_add_test(test_geometry_surface_distance SOURCES test_geometry_surface_distance.cpp DEPS dualhex::geometry)
 if(TARGET mesh_quality)  # the independent benchmark's measurements (built with DUALHEX_BUILD_BENCH)

@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "dualhex/geometry/hex_topology.hpp"
-#include "dualhex/geometry/mesh_pipeline.hpp"
+#include "dualhex/mesher/default_shape.hpp"
 #include "test_geometry_fixture.hpp"
 #include "test_geometry_hex_block.hpp"
 
@@ -166,7 +166,7 @@ TEST(HexTopology, IdOutOfRangeNamesTheHex) {
 
 TEST(SurfaceTopology, CubeTorusAndTwoCubes) {
     EXPECT_EQ(chis(surface_topology(unit_cube_surface())), (std::vector<std::int64_t>{2}));
-    EXPECT_EQ(chis(surface_topology(default_shape())), (std::vector<std::int64_t>{0}));
+    EXPECT_EQ(chis(surface_topology(dualhex::mesher::default_shape())), (std::vector<std::int64_t>{0}));
     TriangleSurface two = unit_cube_surface();
     const TriangleSurface other = unit_cube_surface(3, 4);
     for (const auto& p : other.vertices) two.vertices.push_back(p);
@@ -183,11 +183,11 @@ TEST(SurfaceTopology, CubeTorusAndTwoCubes) {
 TEST(SurfaceTopology, ComparisonOfMeshAndSurface) {
     const HexBlock b = hex_block(3, 3, 2);
     const auto ring = check_hex_topology(pick(b, [](int i, int j, int) { return !(i == 1 && j == 1); }));
-    const auto torus = surface_topology(default_shape());
+    const auto torus = surface_topology(dualhex::mesher::default_shape());
     const auto cube = surface_topology(unit_cube_surface());
     const auto same = compare_topology(ring.boundary_components, torus);
     EXPECT_TRUE(same.same) << same.describe();
-    EXPECT_TRUE(compare_topology(ring, default_shape()).same);
+    EXPECT_TRUE(compare_topology(ring, dualhex::mesher::default_shape()).same);
     EXPECT_FALSE(compare_topology(ring, unit_cube_surface()).same);
     const auto differ = compare_topology(ring.boundary_components, cube);
     EXPECT_FALSE(differ.same);
