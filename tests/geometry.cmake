@@ -16,3 +16,10 @@ if(DUALHEX_PYTHON3)
   set_tests_properties(geometry_meshio_readback PROPERTIES SKIP_RETURN_CODE 77)
 endif()
 dualhex_add_test(test_geometry_quality SOURCES test_geometry_quality.cpp DEPS dualhex::geometry)
+
+# Size control (surface octree criteria, the mesh at a size, the CLI's size options) and
+# per-cell data (writers, the mesher's per-hex levels).
+dualhex_add_test(test_geometry_size_control SOURCES test_geometry_size_control.cpp DEPS dualhex::mesher)
+target_compile_definitions(test_geometry_size_control PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
+add_dependencies(test_geometry_size_control dualhex)
+dualhex_add_test(test_geometry_cell_data SOURCES test_geometry_cell_data.cpp DEPS dualhex::mesher)
