@@ -27,7 +27,7 @@ struct MeshOptionsCli {
     bool json = false, force = false;
     // Size control (mesher/mesh_size.hpp): the preset's values unless given.
     std::optional<double> size, size_rel, surface_band, thickness_factor, curvature_angle;
-    std::optional<int> min_depth, max_depth, curvature_levels;
+    std::optional<int> min_depth, max_depth, curvature_levels, thickness_levels;
     std::optional<std::size_t> max_leaves;
 };
 
@@ -49,6 +49,7 @@ mesher::MeshSizeOptions size_options(const MeshOptionsCli& opt) {
     if (opt.min_depth) s.min_depth = *opt.min_depth;
     if (opt.max_depth) s.max_depth = *opt.max_depth;
     if (opt.curvature_levels) s.curvature_levels = *opt.curvature_levels;
+    if (opt.thickness_levels) s.thickness_levels = *opt.thickness_levels;
     if (opt.max_leaves) s.max_leaves = *opt.max_leaves;
     try {
         mesher::check_size_options(s);
@@ -126,6 +127,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"curvature_angle", size.curvature_angle},
                       {"curvature_levels", size.curvature_levels},
                       {"curvature_splits", r.curvature_splits},
+                      {"thickness_levels", size.thickness_levels},
                       {"surface_band", size.surface_band}}},
                     {"triangles", triangles},
                     {"leaves", r.leaves},
@@ -193,6 +195,8 @@ void add_size_options(CLI::App& sub, MeshOptionsCli& opt) {
                    "Octree depth cap, 1.." + std::to_string(mesher::kMaxMeshDepth) + " (default 12)")->group(g);
     sub.add_option("--thickness-factor", opt.thickness_factor,
                    "Cells at the surface at most this * the local thickness; 0: off (default 0.5)")->group(g);
+    sub.add_option("--thickness-levels", opt.thickness_levels,
+                   "Thickness refines at most this many levels below the target size (default 3)")->group(g);
     sub.add_option("--curvature-angle", opt.curvature_angle,
                    "Refine cells where the surface normal turns more than this (degrees; 0: off; default 40)")
         ->group(g);

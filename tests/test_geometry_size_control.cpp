@@ -195,12 +195,28 @@ TEST(SizeControl, RunawayRefinementStopsAtTheLeafBound) {
     EXPECT_THROW((void)surface_octree(tree, o), OctreeTooLarge);
 }
 
+TEST(SizeControl, ThicknessRefinesAThinSlabUpToItsCap) {
+    // A 1 x 1 x 0.01 slab: root 1.2; thickness 0.01 asks for cells of 0.005, level 8.
+    auto slab = unit_cube_surface();
+    for (auto& p : slab.vertices) p.z() *= 0.01;
+    const AabbTree tree(slab);
+    SurfaceOctreeOptions o = size_only(0.3, 12);  // size level 2
+    o.thickness_factor = 0.5;
+    o.thickness_levels = 2;
+    const SurfaceOctree capped = surface_octree(tree, o);
+    EXPECT_EQ(capped.size_level, 2);
+    EXPECT_EQ(capped.grid.max_level(), 4);
+    o.thickness_levels = 10;
+    EXPECT_EQ(surface_octree(tree, o).grid.max_level(), 8);
+}
+
 TEST(SizeControl, NegativeOptionsAreRefused) {
     const AabbTree tree(unit_cube_surface());
     for (auto set : {+[](SurfaceOctreeOptions& o) { o.surface_size = -1; },
                      +[](SurfaceOctreeOptions& o) { o.surface_band = -1; },
                      +[](SurfaceOctreeOptions& o) { o.curvature_angle = -0.1; },
-                     +[](SurfaceOctreeOptions& o) { o.curvature_levels = -1; }}) {
+                     +[](SurfaceOctreeOptions& o) { o.curvature_levels = -1; },
+                     +[](SurfaceOctreeOptions& o) { o.thickness_levels = -1; }}) {
         SurfaceOctreeOptions o;
         set(o);
         EXPECT_THROW((void)surface_octree(tree, o), std::invalid_argument);

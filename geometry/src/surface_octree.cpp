@@ -58,7 +58,7 @@ struct Builder {
     const SurfaceOctreeOptions& opt;
     const std::vector<double>& thickness;
     const std::vector<Eigen::Vector3d>& normals;  // area-weighted, per triangle
-    int curvature_cap = 0;
+    int curvature_cap = 0, thickness_cap = 0;
     std::vector<Leaf> leaves;
     std::size_t crossing = 0, curvature_splits = 0;
 
@@ -76,7 +76,7 @@ struct Builder {
         const double edge = root.edge(cell.level);
         if ((near || !tris.empty()) && opt.surface_size > 0 && edge > opt.surface_size) return true;
         if (tris.empty()) return false;
-        if (opt.thickness_factor > 0) {
+        if (opt.thickness_factor > 0 && cell.level < thickness_cap) {
             double thin = std::numeric_limits<double>::infinity();
             for (int t : tris) thin = std::min(thin, thickness[t]);
             if (edge > opt.thickness_factor * thin) return true;
@@ -124,7 +124,7 @@ void check(const SurfaceOctreeOptions& o) {
     if (o.min_depth < 0 || o.min_depth > o.max_depth)
         throw std::invalid_argument("surface_octree: min_depth must be in [0, max_depth]");
     if (!(o.surface_size >= 0) || !(o.surface_band >= 0) || !(o.thickness_factor >= 0) ||
-        !(o.curvature_angle >= 0) || o.curvature_levels < 0 || !(o.margin >= 0))
+        !(o.curvature_angle >= 0) || o.curvature_levels < 0 || o.thickness_levels < 0 || !(o.margin >= 0))
         throw std::invalid_argument("surface_octree: size, band, thickness factor, curvature angle and levels, "
                                     "margin must be >= 0");
 }
@@ -138,10 +138,11 @@ SurfaceOctree surface_octree(const AabbTree& tree, const SurfaceOctreeOptions& o
     check(options);
     SurfaceOctree out;
     out.root = root_cube(tree.bounds(), options.margin);
-    int curvature_cap = options.max_depth;
+    int curvature_cap = options.max_depth, thickness_cap = options.max_depth;
     if (options.surface_size > 0) {
         out.size_level = level_for_size(out.root, options.surface_size);
         curvature_cap = out.size_level + options.curvature_levels;
+        thickness_cap = out.size_level + options.thickness_levels;
         const int level = std::min(out.size_level, options.max_depth);
         const std::size_t estimate = estimated_leaves(out.root, surface_area(tree.surface()), level);
         if (estimate > options.max_leaves)
@@ -152,7 +153,7 @@ SurfaceOctree surface_octree(const AabbTree& tree, const SurfaceOctreeOptions& o
     }
     out.thickness = local_thickness(tree);
     const std::vector<Eigen::Vector3d> normals = area_normals(tree.surface());
-    Builder b{tree, out.root, options, out.thickness, normals, curvature_cap, {}, 0, 0};
+    Builder b{tree, out.root, options, out.thickness, normals, curvature_cap, thickness_cap, {}, 0, 0};
     std::vector<int> all(tree.surface().triangles.size());
     for (std::size_t t = 0; t < all.size(); ++t) all[t] = static_cast<int>(t);
     b.visit(Leaf{}, all);

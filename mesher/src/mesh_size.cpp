@@ -36,6 +36,7 @@ void check_size_options(const MeshSizeOptions& o) {
     if (!(o.thickness_factor >= 0)) refuse("thickness factor must be >= 0");
     if (!(o.curvature_angle >= 0 && o.curvature_angle <= 180)) refuse("curvature angle must be in [0, 180] degrees");
     if (o.curvature_levels < 0) refuse("curvature levels must be >= 0");
+    if (o.thickness_levels < 0) refuse("thickness levels must be >= 0");
     if (o.max_depth < 1 || o.max_depth > kMaxMeshDepth)
         refuse("max depth must be in [1, " + std::to_string(kMaxMeshDepth) + "], got " + std::to_string(o.max_depth));
     if (o.min_depth < 0 || o.min_depth > o.max_depth)
@@ -57,6 +58,7 @@ geometry::SurfaceOctreeOptions octree_options(const MeshSizeOptions& o, const Ei
     g.surface_band = o.surface_band * g.surface_size;
     g.curvature_angle = o.curvature_angle * std::numbers::pi / 180.0;
     g.curvature_levels = o.curvature_levels;
+    g.thickness_levels = o.thickness_levels;
     g.max_leaves = o.max_leaves;
     return g;
 }

@@ -9,8 +9,9 @@
 //   - level < min_depth, or
 //   - size: the surface crosses it (some triangle overlaps the closed cell), or passes
 //     within `surface_band` of it, and its edge exceeds surface_size, or
-//   - thickness: the surface crosses it and its edge exceeds thickness_factor * (the
-//     smallest local thickness of the triangles crossing it), or
+//   - thickness: the surface crosses it, its level is below the thickness cap and its edge
+//     exceeds thickness_factor * (the smallest local thickness of the triangles crossing
+//     it), or
 //   - curvature: the surface crosses it, its level is below the curvature cap and the
 //     normal spread of the triangles crossing it (surface_curvature.hpp) exceeds
 //     curvature_angle: the surface bends too much over the cell, has a sharp feature in
@@ -77,6 +78,7 @@ struct SurfaceOctreeOptions {
     double surface_band = 0;       ///< cells this close to the surface (model units) get surface_size too
     double curvature_angle = 0;    ///< max normal spread in a crossing cell (radians), 0: off
     int curvature_levels = 2;      ///< curvature refines at most this many levels below size_level
+    int thickness_levels = 3;      ///< thickness refines at most this many levels below size_level
     std::size_t max_leaves = 20'000'000;
 };
 
@@ -111,7 +113,7 @@ struct SurfaceOctree {
 
 /// Octree refined towards the surface (unbalanced, unpaired). Throws std::invalid_argument
 /// for max_depth outside [0, 20], min_depth > max_depth, a negative size, band, factor,
-/// angle or curvature_levels; OctreeTooLarge beyond max_leaves.
+/// angle or levels; OctreeTooLarge beyond max_leaves.
 [[nodiscard]] SurfaceOctree surface_octree(const AabbTree& tree, const SurfaceOctreeOptions& options = {});
 
 /// surface_octree, then grid = pair(grid, mode): paired and strongly/weakly balanced.

@@ -9,6 +9,7 @@
 //   min_depth       every cell at least this deep
 //   max_depth       a cap only: no cell deeper (1..kMaxMeshDepth)
 //   thickness_factor  cells crossing the surface at most this * the local thickness (0: off)
+//   thickness_levels  thickness refines at most this many levels below the target's level
 //   curvature_angle   max normal spread over a crossing cell, degrees (0: off)
 //   curvature_levels  curvature refines at most this many levels below the target's level
 //   max_leaves      refuse (OctreeTooLarge) an octree estimated or grown beyond this
@@ -39,6 +40,7 @@ struct MeshSizeOptions {
     int min_depth = 0;
     int max_depth = 12;
     double thickness_factor = 0.5;
+    int thickness_levels = 3;
     double curvature_angle = 40;
     int curvature_levels = 1;
     std::size_t max_leaves = 2'000'000;  ///< about 2.5 GB through the pipeline
@@ -50,7 +52,7 @@ struct MeshSizeOptions {
 [[nodiscard]] std::optional<MeshPreset> parse_mesh_preset(const std::string& name);
 
 /// Throws std::invalid_argument naming the option: negative size/size_rel/band/factor/angle
-/// or levels, both size and size_rel zero, depths outside [0, kMaxMeshDepth] (max >= 1),
+/// or levels, an angle above 180, both size and size_rel zero, depths outside [0, kMaxMeshDepth] (max >= 1),
 /// min_depth > max_depth, max_leaves 0.
 void check_size_options(const MeshSizeOptions& size);
 
