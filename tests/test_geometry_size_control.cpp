@@ -256,6 +256,28 @@ TEST(SizeControl, CubeMeshHasBoundaryHexesOfTheTargetSize) {
     EXPECT_NEAR(median_boundary_edge(capped.mesh), fine, 1e-9);
 }
 
+TEST(SizeControl, MeshesAndVerifiesAtDepth16) {
+    // A cube of edge 2 and, 1 above it, a cube of edge 2e-4: root 4.92, so cells of half
+    // the small cube's thickness (1e-4) are level 16 (7.5e-5), the cap.
+    TriangleSurface s = unit_cube_surface(-1, 1);
+    const TriangleSurface tiny = unit_cube_surface(0.9, 0.9002);
+    const int offset = static_cast<int>(s.vertices.size());
+    for (const auto& p : tiny.vertices) s.vertices.push_back(p + Vector3d(0, 0, 2.1));
+    for (const auto& t : tiny.triangles) s.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    const AabbTree tree(s);
+    mesher::MeshPipelineOptions o;
+    o.size_rel = 0.5;
+    o.curvature_angle = 0;
+    o.thickness_levels = 16;
+    o.max_depth = mesher::kMaxMeshDepth;
+    const mesher::MeshPipelineResult r = mesher::mesh_surface(tree, o);  // throws if it does not verify
+    EXPECT_EQ(r.octree_depth, 16);
+    ASSERT_FALSE(r.mesh.hexes.empty());
+    const int finest = *std::max_element(r.cell_data.level.begin(), r.cell_data.level.end());
+    EXPECT_EQ(finest, 16);  // hexes inside the tiny cube
+    EXPECT_GT(r.quality.min, 0.0);
+}
+
 // --- the command line (DUALHEX_EXE) ---
 
 struct CliRun {
