@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <optional>
 
 #include "commands.hpp"
 #include "histogram_format.hpp"
+#include "mesh_size_cli.hpp"
 
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
@@ -22,55 +22,14 @@ namespace dualhex::app {
 namespace {
 
 struct MeshOptionsCli {
-    std::string input, output, balance = "weak", preset = "medium";
+    std::string input, output, balance = "weak";
     int smooth = 5;
     bool json = false, force = false;
-    // Size control (mesher/mesh_size.hpp): the preset's values unless given.
-    std::optional<double> size, size_rel, surface_band, thickness_factor, curvature_angle;
-    std::optional<int> min_depth, max_depth, curvature_levels, thickness_levels;
-    std::optional<std::size_t> max_leaves;
+    MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
 
-// The preset, overridden by the size options given; refused (exit 2) if inconsistent.
-mesher::MeshSizeOptions size_options(const MeshOptionsCli& opt) {
-    mesher::MeshSizeOptions s = mesher::mesh_preset(*mesher::parse_mesh_preset(opt.preset));
-    if (opt.size) {
-        s.size = *opt.size;
-        s.size_rel = 0;
-        if (!(*opt.size > 0)) throw UsageError("--size must be > 0, got " + std::to_string(*opt.size));
-    }
-    if (opt.size_rel) {
-        s.size_rel = *opt.size_rel;
-        if (!(*opt.size_rel > 0)) throw UsageError("--size-rel must be > 0, got " + std::to_string(*opt.size_rel));
-    }
-    if (opt.surface_band) s.surface_band = *opt.surface_band;
-    if (opt.thickness_factor) s.thickness_factor = *opt.thickness_factor;
-    if (opt.curvature_angle) s.curvature_angle = *opt.curvature_angle;
-    if (opt.min_depth) s.min_depth = *opt.min_depth;
-    if (opt.max_depth) s.max_depth = *opt.max_depth;
-    if (opt.curvature_levels) s.curvature_levels = *opt.curvature_levels;
-    if (opt.thickness_levels) s.thickness_levels = *opt.thickness_levels;
-    if (opt.max_leaves) s.max_leaves = *opt.max_leaves;
-    try {
-        mesher::check_size_options(s);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
-    }
-    return s;
-}
-
-// Warns when the size asks for cells finer than the depth cap allows.
-void warn_if_capped(const mesher::MeshSizeOptions& s, const geometry::AabbTree& tree) {
-    const geometry::RootCube root = geometry::root_cube(tree.bounds(), geometry::SurfaceOctreeOptions{}.margin);
-    const double size = mesher::target_size(s, tree.bounds());
-    const int level = geometry::level_for_size(root, size);
-    if (level > s.max_depth)
-        std::cerr << "warning: size " << size << " needs depth " << level << ", capped at --max-depth "
-                  << s.max_depth << ": cells at the surface will be " << root.edge(s.max_depth) << '\n';
-}
-
 void run_mesh(const MeshOptionsCli& opt) {
-    const mesher::MeshSizeOptions size = size_options(opt);
+    const mesher::MeshSizeOptions size = resolve_size_options(opt.size);
     {  // before any work: the format and the overwrite check
         const std::string ext = std::filesystem::path(opt.output).extension().string();
         if (ext != ".vtk" && ext != ".vtu" && ext != ".mesh")
@@ -118,7 +77,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                     {"balance", opt.balance},
                     {"max_depth", size.max_depth},
                     {"size",
-                     {{"preset", opt.preset},
+                     {{"preset", opt.size.preset},
                       {"target", r.target_size},
                       {"size_level", r.size_level},
                       {"octree_depth", r.octree_depth},
@@ -161,7 +120,7 @@ void run_mesh(const MeshOptionsCli& opt) {
     } else {
         std::printf("%s: %zu triangles, %s balance\n", input_name.c_str(), triangles, opt.balance.c_str());
         std::printf("size:             %.4g at the surface (%s preset; level %d), octree depth %d (max %d)\n",
-                    r.target_size, opt.preset.c_str(), r.size_level, r.octree_depth, size.max_depth);
+                    r.target_size, opt.size.preset.c_str(), r.size_level, r.octree_depth, size.max_depth);
         std::printf("grid:             %zu leaves, %zu installed cells, %zu dual hexes\n", r.leaves, r.cells,
                     r.dual_hexes);
         std::printf("mesh:             %zu hexes, %zu vertices (%zu on the boundary, projected)\n",
@@ -181,31 +140,6 @@ void run_mesh(const MeshOptionsCli& opt) {
     }
 }
 
-void add_size_options(CLI::App& sub, MeshOptionsCli& opt) {
-    const std::string g = "Size";
-    sub.add_option("--preset", opt.preset, "coarse, medium (default) or fine: about 5k, 20k, 100k hexes on the bunny")
-        ->check(CLI::IsMember({"coarse", "medium", "fine"}))->group(g);
-    auto* size = sub.add_option("--size", opt.size, "Target cell size at the surface, model units")->group(g);
-    sub.add_option("--size-rel", opt.size_rel, "Target size as a fraction of the bbox diagonal (medium: 0.02)")
-        ->excludes(size)->group(g);
-    sub.add_option("--surface-band", opt.surface_band,
-                   "Cells within this many target sizes of the surface get the target size too (default 0)")->group(g);
-    sub.add_option("--min-depth", opt.min_depth, "Octree min depth (default 0)")->group(g);
-    sub.add_option("--max-depth", opt.max_depth,
-                   "Octree depth cap, 1.." + std::to_string(mesher::kMaxMeshDepth) + " (default 12)")->group(g);
-    sub.add_option("--thickness-factor", opt.thickness_factor,
-                   "Cells at the surface at most this * the local thickness; 0: off (default 0.5)")->group(g);
-    sub.add_option("--thickness-levels", opt.thickness_levels,
-                   "Thickness refines at most this many levels below the target size (default 3)")->group(g);
-    sub.add_option("--curvature-angle", opt.curvature_angle,
-                   "Refine cells where the surface normal turns more than this (degrees; 0: off; default 40)")
-        ->group(g);
-    sub.add_option("--curvature-levels", opt.curvature_levels,
-                   "Curvature refines at most this many levels below the target size (default 1)")->group(g);
-    sub.add_option("--max-leaves", opt.max_leaves, "Refuse octrees beyond this many leaves (default 2000000)")
-        ->group(g);
-}
-
 }  // namespace
 
 void register_mesh(CLI::App& app) {
@@ -219,7 +153,7 @@ void register_mesh(CLI::App& app) {
     sub->add_flag("--force", opt->force, "Overwrite the output file if it exists");
     sub->add_option("--balance", opt->balance, "weak (default, weak rule) or strong (strong rule)")
         ->check(CLI::IsMember({"weak", "strong"}));
-    add_size_options(*sub, *opt);
+    add_size_options(*sub, opt->size);
     sub->add_option("--smooth", opt->smooth, "Laplacian smoothing iterations of the interior vertices (default 5)")
         ->check(CLI::Range(0, 1000));
     add_json_flag(*sub, opt->json);

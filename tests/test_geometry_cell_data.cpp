@@ -97,7 +97,8 @@ TEST(CellData, NoDataNoSectionAndAWrongCountIsRefused) {
 LeafGrid one_octant_refined() {
     std::string text;
     auto add = [&](int level, int i, int j, int k) {
-        text += std::to_string(level) + ' ' + std::to_string(i) + ' ' + std::to_string(j) + ' ' + std::to_string(k) + '\n';
+        for (int v : {level, i, j, k}) text += std::to_string(v) + ' ';
+        text += '\n';
     };
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)

@@ -18,9 +18,9 @@
 // Writing the file is the caller's job (geometry::write_hex_mesh); MeshTimes::write is left 0.
 // Size control: the MeshSizeOptions part of the options (mesh_size.hpp; default the
 // medium preset). Errors: std::invalid_argument for bad options, geometry::OctreeTooLarge
-// for a size whose octree would exceed max_leaves (estimated first, before any work), std::runtime_error if the installation
-// does not verify, the clipped dual has a non-cube cell (bugs, never bad input) or no hex
-// centroid is inside the surface.
+// for a size whose octree would exceed max_leaves (estimated first, before any work),
+// std::runtime_error if the installation does not verify, the clipped dual has a non-cube
+// cell (bugs, never bad input) or no hex centroid is inside the surface.
 #include <cstddef>
 #include <functional>
 #include <map>
