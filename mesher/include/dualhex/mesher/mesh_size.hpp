@@ -14,9 +14,10 @@
 //   curvature_levels  curvature refines at most this many levels below the target's level
 //   max_leaves      refuse (OctreeTooLarge) an octree estimated or grown beyond this
 //
-// Presets (tuned on gao_bunny_tri.off to about 5k, 20k and 100k hexes, README "Figures"):
-// coarse, medium (the defaults of MeshSizeOptions), fine; they set size_rel and the
-// curvature refinement and leave the caps alone.
+// Presets, tuned on gao_bunny_tri.off to about 5k, 20k and 100k hexes (measured: 5,389,
+// 24,835, 106,767; all 15 shared models in README, `dualhex mesh`): coarse (size_rel 0.04,
+// thickness_factor 1, curvature_angle 50), medium (the defaults of MeshSizeOptions), fine
+// (size_rel 0.01). They leave the caps and levels alone.
 #include <cstddef>
 #include <optional>
 #include <string>
