@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "histogram_format.hpp"
+#include "mesh_size_cli.hpp"
 
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
@@ -22,11 +23,13 @@ namespace {
 
 struct MeshOptionsCli {
     std::string input, output, balance = "weak";
-    int max_depth = 6, smooth = 5;
+    int smooth = 5;
     bool json = false, force = false;
+    MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
 
 void run_mesh(const MeshOptionsCli& opt) {
+    const mesher::MeshSizeOptions size = resolve_size_options(opt.size);
     {  // before any work: the format and the overwrite check
         const std::string ext = std::filesystem::path(opt.output).extension().string();
         if (ext != ".vtk" && ext != ".vtu" && ext != ".mesh")
@@ -50,15 +53,21 @@ void run_mesh(const MeshOptionsCli& opt) {
     const geometry::AabbTree tree(std::move(surface));
 
     mesher::MeshPipelineOptions options;
+    static_cast<mesher::MeshSizeOptions&>(options) = size;
     options.balance = opt.balance == "strong" ? Balance::Strong : Balance::Weak;
-    options.max_depth = opt.max_depth;
     options.smooth_iterations = opt.smooth;
     if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
-    mesher::MeshPipelineResult r = mesher::mesh_surface(tree, options);
+    warn_if_capped(size, tree);
+    mesher::MeshPipelineResult r;
+    try {
+        r = mesher::mesh_surface(tree, options);
+    } catch (const geometry::OctreeTooLarge& e) {
+        throw UsageError(std::string(e.what()) + " (a coarser --size or --size-rel, or raise --max-leaves)");
+    }
 
     if (progress) std::cerr << "  write...\n";
     const auto t0 = std::chrono::steady_clock::now();
-    geometry::write_hex_mesh(opt.output, r.mesh, opt.force);
+    geometry::write_hex_mesh(opt.output, r.mesh, opt.force, r.cell_data);
     r.ms.write = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
     const auto& q = r.quality;
@@ -66,7 +75,19 @@ void run_mesh(const MeshOptionsCli& opt) {
         print_json({{"input", input_name},
                     {"output", opt.output},
                     {"balance", opt.balance},
-                    {"max_depth", opt.max_depth},
+                    {"max_depth", size.max_depth},
+                    {"size",
+                     {{"preset", opt.size.preset},
+                      {"target", r.target_size},
+                      {"size_level", r.size_level},
+                      {"octree_depth", r.octree_depth},
+                      {"min_depth", size.min_depth},
+                      {"thickness_factor", size.thickness_factor},
+                      {"curvature_angle", size.curvature_angle},
+                      {"curvature_levels", size.curvature_levels},
+                      {"curvature_splits", r.curvature_splits},
+                      {"thickness_levels", size.thickness_levels},
+                      {"surface_band", size.surface_band}}},
                     {"triangles", triangles},
                     {"leaves", r.leaves},
                     {"cells", r.cells},
@@ -97,8 +118,9 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"report", r.ms.report},
                       {"write", r.ms.write}}}});
     } else {
-        std::printf("%s: %zu triangles, max depth %d, %s balance\n", input_name.c_str(), triangles, opt.max_depth,
-                    opt.balance.c_str());
+        std::printf("%s: %zu triangles, %s balance\n", input_name.c_str(), triangles, opt.balance.c_str());
+        std::printf("size:             %.4g at the surface (%s preset; level %d), octree depth %d (max %d)\n",
+                    r.target_size, opt.size.preset.c_str(), r.size_level, r.octree_depth, size.max_depth);
         std::printf("grid:             %zu leaves, %zu installed cells, %zu dual hexes\n", r.leaves, r.cells,
                     r.dual_hexes);
         std::printf("mesh:             %zu hexes, %zu vertices (%zu on the boundary, projected)\n",
@@ -131,7 +153,7 @@ void register_mesh(CLI::App& app) {
     sub->add_flag("--force", opt->force, "Overwrite the output file if it exists");
     sub->add_option("--balance", opt->balance, "weak (default, weak rule) or strong (strong rule)")
         ->check(CLI::IsMember({"weak", "strong"}));
-    sub->add_option("--max-depth", opt->max_depth, "Octree max depth (default 6)")->check(CLI::Range(1, 10));
+    add_size_options(*sub, opt->size);
     sub->add_option("--smooth", opt->smooth, "Laplacian smoothing iterations of the interior vertices (default 5)")
         ->check(CLI::Range(0, 1000));
     add_json_flag(*sub, opt->json);

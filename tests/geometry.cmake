@@ -24,3 +24,10 @@ if(TARGET mesh_quality)  # the independent benchmark's measurements (built with 
   target_compile_definitions(test_bench_mesh_quality PRIVATE MESH_QUALITY_EXE="$<TARGET_FILE:mesh_quality>")
   add_dependencies(test_bench_mesh_quality mesh_quality)
 endif()
+
+# Size control (surface octree criteria, the mesh at a size, the CLI's size options) and
+# per-cell data (writers, the mesher's per-hex levels).
+dualhex_add_test(test_geometry_size_control SOURCES test_geometry_size_control.cpp DEPS dualhex::mesher)
+target_compile_definitions(test_geometry_size_control PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
+add_dependencies(test_geometry_size_control dualhex)
+dualhex_add_test(test_geometry_cell_data SOURCES test_geometry_cell_data.cpp DEPS dualhex::mesher)

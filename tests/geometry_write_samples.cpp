@@ -1,6 +1,7 @@
 // Test helper for geometry_meshio_readback: writes, into the directory given as argv[1],
 //   cube.{vtk,vtu,mesh}   the unit cube as one hex (8 points)
-//   block.{vtk,vtu,mesh}  a 3x2x2 block of hexes (12 hexes, 36 points), sheared
+//   block.{vtk,vtu,mesh}  a 3x2x2 block of hexes (12 hexes, 36 points), sheared, with cell
+//                         data: level h % 3, scaled_jacobian 1 - h / 100 (hex h)
 //   complex.vtk           a 2x2x2 box of leaves as a polyhedral complex (27 points, 8 cells)
 //   complex_faces.vtk     its 36 faces as polygons (24 on the boundary)
 // Exit 0 on success, 1 with a message otherwise.
@@ -37,9 +38,14 @@ int main(int argc, char** argv) {
                     block.hexes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
                                            id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
                                            id(i, j + 1, k + 1)});
+        HexCellData block_data;
+        for (std::size_t h = 0; h < block.hexes.size(); ++h) {
+            block_data.level.push_back(static_cast<int>(h % 3));
+            block_data.scaled_jacobian.push_back(1.0 - static_cast<double>(h) / 100.0);
+        }
         for (const char* ext : {".vtk", ".vtu", ".mesh"}) {
             write_hex_mesh((dir / (std::string("cube") + ext)).string(), cube, true);
-            write_hex_mesh((dir / (std::string("block") + ext)).string(), block, true);
+            write_hex_mesh((dir / (std::string("block") + ext)).string(), block, true, block_data);
         }
         const CellComplex box = leaves_to_complex(leaf_box(1, {0, 0, 0}, {2, 2, 2}));
         write_complex_vtk((dir / "complex.vtk").string(), box, {}, true);

@@ -9,7 +9,7 @@
 namespace dualhex::mesher {
 
 geometry::HexMesh extract_inside(const ClippedDual& dual, std::int64_t extent, const geometry::RootCube& root,
-                                 const geometry::AabbTree& tree) {
+                                 const geometry::AabbTree& tree, std::vector<std::uint32_t>* kept) {
     const double ext = static_cast<double>(extent);
     std::vector<Eigen::Vector3d> all_points;
     all_points.reserve(dual.points.size());
@@ -18,7 +18,9 @@ geometry::HexMesh extract_inside(const ClippedDual& dual, std::int64_t extent, c
                              root.size * Eigen::Vector3d(p.coordinate(0, ext), p.coordinate(1, ext), p.coordinate(2, ext)));
     std::vector<int> new_id(all_points.size(), -1);
     geometry::HexMesh mesh;
-    for (const auto& h : dual.hexes) {
+    if (kept) kept->clear();
+    for (std::size_t n = 0; n < dual.hexes.size(); ++n) {
+        const auto& h = dual.hexes[n];
         Eigen::Vector3d c = Eigen::Vector3d::Zero();
         for (std::uint32_t v : h) c += all_points[v];
         c /= 8.0;
@@ -33,6 +35,7 @@ geometry::HexMesh extract_inside(const ClippedDual& dual, std::int64_t extent, c
             q[i] = id;
         }
         mesh.hexes.push_back(q);
+        if (kept) kept->push_back(static_cast<std::uint32_t>(n));
     }
     return mesh;
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "dualhex/grid/refinement.hpp"
+#include "dualhex/mesher/cell_levels.hpp"
 #include "dualhex/mesher/extract.hpp"
 #include "dualhex/mesher/install_stage.hpp"
 #include "dualhex/mesher/project.hpp"
@@ -30,8 +31,7 @@ auto timed(const MeshPipelineOptions& options, const char* name, double& ms, Sta
 }
 
 void check_options(const MeshPipelineOptions& options) {
-    if (options.max_depth < 1 || options.max_depth > 12)
-        throw std::invalid_argument("max depth must be in [1, 12], got " + std::to_string(options.max_depth));
+    check_size_options(options);
     if (options.smooth_iterations < 0) throw std::invalid_argument("smoothing iterations must be >= 0");
 }
 
@@ -42,15 +42,22 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     MeshPipelineResult result;
     MeshTimes& ms = result.ms;
 
-    geometry::SurfaceOctreeOptions octree_options;
-    octree_options.max_depth = options.max_depth;
+    const geometry::SurfaceOctreeOptions octree_options = mesher::octree_options(options, tree.bounds());
     geometry::SurfaceOctree octree =
         timed(options, "octree", ms.octree, [&] { return geometry::surface_octree(tree, octree_options); });
     result.root = octree.root;
+    result.target_size = octree_options.surface_size;
+    result.size_level = octree.size_level;
+    result.octree_depth = octree.grid.max_level();
+    result.curvature_splits = octree.curvature_splits;
     const LeafGrid balanced = timed(options, "balance", ms.balance, [&] { return balance(octree.grid, options.balance); });
     const LeafGrid grid = timed(options, "pair", ms.pair, [&] { return pair(balanced, options.balance); });
     ms.balance_pair = ms.balance + ms.pair;
     result.leaves = grid.size();
+    if (grid.size() > options.max_leaves)  // pairing and balance grade the octree: bounded, but check
+        throw geometry::OctreeTooLarge("paired grid: " + std::to_string(grid.size()) + " leaves, more than the limit " +
+                                           std::to_string(options.max_leaves),
+                                       grid.size());
 
     const InstallResult installed =
         timed(options, "install", ms.install, [&] { return install_schemes(grid, options.balance); });
@@ -61,8 +68,11 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     result.dual_edge_valences = clipped_dual_edge_valences(dual);
 
     HexMesh& mesh = result.mesh;
+    std::vector<std::uint32_t> kept;
     mesh = timed(options, "extract", ms.extract,
-                 [&] { return extract_inside(dual, root_extent(installed), octree.root, tree); });
+                 [&] { return extract_inside(dual, root_extent(installed), octree.root, tree, &kept); });
+    const std::vector<int> dual_levels = dual_hex_levels(dual, installed, grid);
+    for (std::uint32_t h : kept) result.cell_data.level.push_back(dual_levels[h]);
     if (mesh.hexes.empty()) throw std::runtime_error("no hex centroid inside the surface (max depth too small?)");
 
     QualityState state;
@@ -82,6 +92,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
 
     timed(options, "report", ms.report, [&] {
         result.quality = geometry::summarize(state.scaled_jacobian);
+        result.cell_data.scaled_jacobian = state.scaled_jacobian;
         result.singular_edge_valences = interior_singular_edge_valences(mesh);
         result.hausdorff = geometry::boundary_to_surface_distance(mesh, tree);
     });

@@ -5,9 +5,23 @@
 // * (1 + 2 * margin). Leaf (L,i,j,k) of the grid is the cube root.origin +
 // root.size * 2^-L * [i,i+1]x[j,j+1]x[k,k+1].
 //
-// Refinement: a cell is split iff level < min_depth, or the surface crosses it (some
-// triangle overlaps the closed cell) and level < max_depth and the cell edge exceeds
-// thickness_factor * (the smallest local thickness of the triangles crossing it).
+// Refinement: a cell is split iff level < max_depth (a cap, nothing else stops at it) and
+//   - level < min_depth, or
+//   - size: the surface crosses it (some triangle overlaps the closed cell), or passes
+//     within `surface_band` of it, and its edge exceeds surface_size, or
+//   - thickness: the surface crosses it, its level is below the thickness cap and its edge
+//     exceeds thickness_factor * (the smallest local thickness of the triangles crossing
+//     it), or
+//   - curvature: the surface crosses it, its level is below the curvature cap and the
+//     normal spread of the triangles crossing it (surface_curvature.hpp) exceeds
+//     curvature_angle: the surface bends too much over the cell, has a sharp feature in
+//     it, or two sheets of a thin part cross it. The cap is size_level + curvature_levels
+//     (size_level: the first level whose edge is <= surface_size; max_depth without a size).
+// A zero surface_size, thickness_factor or curvature_angle turns that criterion off.
+//
+// Size bound: refinement stops with OctreeTooLarge once more than max_leaves leaves would
+// exist; with a surface_size, the leaves it needs are estimated first (from the surface's
+// area) and an estimate above max_leaves is refused before any work.
 //
 // Local thickness (the feature-size estimate, per triangle): the distance from the
 // triangle's centroid to the first surface hit along the inward normal (ray cast with
@@ -19,6 +33,9 @@
 //
 // The octree is neither balanced nor paired; paired_surface_octree adds
 // pair(grid, mode) from the grid layer (least paired + balanced refinement).
+#include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -57,17 +74,46 @@ struct SurfaceOctreeOptions {
     int min_depth = 0;
     double margin = 0.1;
     double thickness_factor = 0.5;
+    double surface_size = 0;       ///< target cell edge at the surface (model units), 0: none
+    double surface_band = 0;       ///< cells this close to the surface (model units) get surface_size too
+    double curvature_angle = 0;    ///< max normal spread in a crossing cell (radians), 0: off
+    int curvature_levels = 2;      ///< curvature refines at most this many levels below size_level
+    int thickness_levels = 3;      ///< thickness refines at most this many levels below size_level
+    std::size_t max_leaves = 20'000'000;
 };
+
+/// A refinement that would exceed SurfaceOctreeOptions::max_leaves.
+class OctreeTooLarge : public std::runtime_error {
+public:
+    OctreeTooLarge(const std::string& message, std::size_t leaves)
+        : std::runtime_error(message), leaves_(leaves) {}
+    /// The estimate (or the count reached) that was refused.
+    [[nodiscard]] std::size_t leaves() const { return leaves_; }
+
+private:
+    std::size_t leaves_;
+};
+
+/// The first level whose cell edge is <= size (0 if the root is), for size > 0.
+[[nodiscard]] int level_for_size(const RootCube& root, double size);
+
+/// Estimated leaves of the paired grid refined to `level` at the surface (`area` its area):
+/// the crossing cells (about 1.5 area / edge^2), with their siblings and the grading
+/// around them (a factor measured on the shared models, see surface_octree.cpp).
+[[nodiscard]] std::size_t estimated_leaves(const RootCube& root, double area, int level);
 
 struct SurfaceOctree {
     LeafGrid grid;
     RootCube root;
     std::vector<double> thickness;   ///< per triangle (local_thickness)
     std::size_t crossing_leaves = 0; ///< leaves of `grid` the surface crosses (before pairing)
+    int size_level = -1;             ///< level_for_size(surface_size), uncapped; -1 without a size
+    std::size_t curvature_splits = 0;  ///< cells split by the curvature criterion alone
 };
 
 /// Octree refined towards the surface (unbalanced, unpaired). Throws std::invalid_argument
-/// for max_depth outside [0, 20] or min_depth > max_depth.
+/// for max_depth outside [0, 20], min_depth > max_depth, a negative size, band, factor,
+/// angle or levels; OctreeTooLarge beyond max_leaves.
 [[nodiscard]] SurfaceOctree surface_octree(const AabbTree& tree, const SurfaceOctreeOptions& options = {});
 
 /// surface_octree, then grid = pair(grid, mode): paired and strongly/weakly balanced.

@@ -1,6 +1,7 @@
 #pragma once
 // Stage "extract": embed the clipped dual in space and keep the hexes inside the surface.
 #include <cstdint>
+#include <vector>
 
 #include "dualhex/geometry/aabb_tree.hpp"
 #include "dualhex/geometry/hex_output.hpp"
@@ -13,7 +14,9 @@ namespace dualhex::mesher {
 /// (lattice point p -> root.origin + root.size * p / extent; a dual vertex is its rational
 /// centroid, mapped), the surface's tree. Output: the hexes whose centroid is inside the
 /// surface (is_inside), VTK order, points renumbered in first-use order. May be empty.
+/// With `kept`: (*kept)[i] = the index into dual.hexes of output hex i (for cell data).
 [[nodiscard]] geometry::HexMesh extract_inside(const ClippedDual& dual, std::int64_t extent,
-                                               const geometry::RootCube& root, const geometry::AabbTree& tree);
+                                               const geometry::RootCube& root, const geometry::AabbTree& tree,
+                                               std::vector<std::uint32_t>* kept = nullptr);
 
 }  // namespace dualhex::mesher

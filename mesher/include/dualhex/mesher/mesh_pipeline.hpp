@@ -16,9 +16,11 @@
 //   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance
 //
 // Writing the file is the caller's job (geometry::write_hex_mesh); MeshTimes::write is left 0.
-// Errors: std::invalid_argument for bad options, std::runtime_error if the installation
-// does not verify, the clipped dual has a non-cube cell (bugs, never bad input) or no hex
-// centroid is inside the surface.
+// Size control: the MeshSizeOptions part of the options (mesh_size.hpp; default the
+// medium preset). Errors: std::invalid_argument for bad options, geometry::OctreeTooLarge
+// for a size whose octree would exceed max_leaves (estimated first, before any work),
+// std::runtime_error if the installation does not verify, the clipped dual has a non-cube
+// cell (bugs, never bad input) or no hex centroid is inside the surface.
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -32,6 +34,7 @@
 #include "dualhex/grid/neighbours.hpp"
 #include "dualhex/mesher/default_shape.hpp"
 #include "dualhex/mesher/mesh_report.hpp"
+#include "dualhex/mesher/mesh_size.hpp"
 #include "dualhex/mesher/quality_state.hpp"
 
 namespace dualhex::mesher {
@@ -43,9 +46,9 @@ using geometry::QualitySummary;
 using geometry::RootCube;
 using geometry::TriangleSurface;
 
-struct MeshPipelineOptions {
+/// The size options (size, size_rel, min/max depth, ...: mesh_size.hpp) and the rest.
+struct MeshPipelineOptions : MeshSizeOptions {
     Balance balance = Balance::Weak;
-    int max_depth = 6;
     int smooth_iterations = 5;
     int untangle_rounds = 10;
     double untangle_below = 0.05;
@@ -62,7 +65,12 @@ struct MeshTimes {
 
 struct MeshPipelineResult {
     HexMesh mesh;                         ///< the kept, projected, smoothed hexes (VTK order)
+    geometry::HexCellData cell_data;      ///< per hex of `mesh`: scaled Jacobian, octree level
     RootCube root;
+    double target_size = 0;               ///< the size at the surface asked for (model units)
+    int size_level = 0;                   ///< level of target_size, uncapped (> max_depth: capped)
+    int octree_depth = 0;                 ///< deepest leaf of the octree
+    std::size_t curvature_splits = 0;     ///< octree cells split for curvature alone
     std::size_t leaves = 0;               ///< paired, balanced grid
     std::size_t cells = 0;                ///< cells of the installed complex
     std::size_t dual_hexes = 0;           ///< hexes of the clipped dual (whole root cube)
