@@ -17,3 +17,10 @@ dualhex_add_test(test_proofs_certificates SOURCES test_proofs_certificates.cpp
 target_compile_definitions(test_proofs_certificates PRIVATE
   DUALHEX_PROOF_CHECKER="$<TARGET_FILE:dualhex-proof-checker>")
 add_dependencies(test_proofs_certificates dualhex-proof-checker)
+
+# Hostile inputs (issue 15): folds, int64-extreme coordinates, non-terminating and huge inputs,
+# manifests that switch checks off. Needs only the checker binary.
+dualhex_add_test(test_proofs_checker_hostile SOURCES test_proofs_checker_hostile.cpp)
+target_compile_definitions(test_proofs_checker_hostile PRIVATE
+  DUALHEX_PROOF_CHECKER="$<TARGET_FILE:dualhex-proof-checker>")
+add_dependencies(test_proofs_checker_hostile dualhex-proof-checker)
