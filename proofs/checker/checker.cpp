@@ -270,10 +270,11 @@ std::vector<P3> face_sheets(const Cert& c, std::size_t f) {
 
 // Local injectivity at edge e = (a, b), u = b - a: each cell k at e has a wedge, turning
 // positively about u from the sheet of its face that walks b -> a to that of its face that
-// walks a -> b. An interior edge's wedges must turn exactly once around u (their sheets
-// strictly increase in angle, no wedge empty or overlapping another); a boundary edge's
-// (box) must run from one boundary face to the other without overlap, turning by at most
-// pi (the box's angle there, a half-turn inside a box face and a quarter at a box edge).
+// walks a -> b. Going from cell to cell, the sheets' angles never pass the first sheet's
+// but once: an interior edge's wedges turn exactly once around u; a boundary edge's (box)
+// run from one boundary face to the other without passing it, turning by at most pi (the
+// box's angle there: a half-turn inside a box face, a quarter at a box edge). A wedge whose
+// two sheets agree counts as empty (proofs/README.md, "What subdivision proves").
 void check_edge_winding(const Cert& c, std::pair<int, int> e, const std::vector<std::pair<int, int>>& uses,
                         const std::vector<std::vector<P3>>& sheets, const std::vector<std::vector<std::pair<int, int>>>& face_cells) {
     const std::string es = "edge " + std::to_string(e.first) + "-" + std::to_string(e.second);
