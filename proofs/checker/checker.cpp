@@ -318,6 +318,76 @@ void check_edge_winding(const Cert& c, std::pair<int, int> e, const std::vector<
     if (starts && half(D.back()) && det(u, r, D.back()) != 0) reject(es + ": the cells at this boundary edge turn by more than a half-turn");
 }
 
+std::vector<int> half_face_loop(const Cert& c, int h) {  // in its orientation, from the face's first vertex
+    std::vector<int> l = c.faces[h / 2];
+    if (h % 2) std::reverse(l.begin() + 1, l.end());
+    return l;
+}
+
+// Claim subdivision, volumes and boundary: every cell has positive volume (6V from the fan
+// triangles, relative to its first vertex), the volumes sum to the domain's, a torus cell
+// spans less than half the period, and in a box the boundary faces tile the box faces.
+void check_volumes(const Cert& c, const std::vector<std::vector<std::pair<int, int>>>& face_cells) {
+    const std::size_t C = c.cells.size(), F = c.faces.size();
+    auto cs = [](std::size_t k) { return "cell " + std::to_string(k); };
+    auto fs = [](std::size_t f) { return "face " + std::to_string(f); };
+    auto loop_of = [&](int h) { return half_face_loop(c, h); };
+    auto near = [&](P3 p, P3 ref) { return nearest(c, p, ref); };
+    i128 total = 0;
+    for (std::size_t k = 0; k < C; ++k) {
+        const P3 ref = c.pos[c.faces[c.cells[k][0] / 2][0]];
+        i128 vol = 0;
+        P3 lo = ref, hi = ref;
+        for (int h : c.cells[k]) {
+            auto l = loop_of(h);
+            for (int v : l) {
+                P3 p = near(c.pos[v], ref);
+                for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+            }
+            P3 o = sub(near(c.pos[l[0]], ref), ref);
+            for (std::size_t j = 1; j + 1 < l.size(); ++j)
+                vol += dot(o, cross(sub(near(c.pos[l[j]], ref), ref), sub(near(c.pos[l[j + 1]], ref), ref)));
+        }
+        // on the torus a cell must span less than half the period, so that the nearest copies
+        // of any two of its vertices are the ones it uses (a face or edge means one thing)
+        for (int a = 0; a < 3; ++a)
+            if (c.domain == "torus" && 2 * (hi[a] - lo[a]) >= c.period) reject(cs(k) + " spans half the torus period or more");
+        if (vol <= 0) reject(cs(k) + " has non-positive volume (6V = " + str(vol) + ")");
+        total += vol;
+    }
+    i128 expect = 6;
+    for (int a = 0; a < 3; ++a) expect *= c.domain == "torus" ? c.period : c.hi[a] - c.lo[a];
+    if (total != expect) reject("cell volumes sum to " + str(total) + "/6, the domain has " + str(expect) + "/6");
+    if (c.domain == "box") {  // boundary faces tile the six box faces, outward; no interior face on them
+        i128 tiled[6] = {0, 0, 0, 0, 0, 0};
+        for (std::size_t f = 0; f < F; ++f) {
+            int plane = -1;
+            for (int p = 0; p < 6 && plane < 0; ++p) {
+                bool on = true;
+                const i64 side = p % 2 ? c.hi[p / 2] : c.lo[p / 2];  // not (p % 2 ? hi : lo)[..]: GCC 12 -O2 UBSan misreports it
+                for (int v : c.faces[f]) on = on && c.pos[v][p / 2] == side;
+                if (on) plane = p;
+            }
+            if (face_cells[f].size() == 2) {
+                if (plane >= 0) reject(fs(f) + " is shared by two cells but lies on the box boundary");
+                continue;
+            }
+            if (plane < 0) reject(fs(f) + " is a boundary face off the box boundary (a hole)");
+            auto l = loop_of(2 * static_cast<int>(f) + face_cells[f][0].second);
+            i128 out = 0;  // twice the area, along the outward axis
+            for (std::size_t j = 1; j + 1 < l.size(); ++j)
+                out += (plane % 2 ? 1 : -1) * cross(sub(c.pos[l[j]], c.pos[l[0]]), sub(c.pos[l[j + 1]], c.pos[l[0]]))[plane / 2];
+            if (out <= 0) reject(fs(f) + " on the box boundary does not face outward");
+            tiled[plane] += out;
+        }
+        for (int p = 0; p < 6; ++p) {
+            int a = p / 2, b = (a + 1) % 3, d = (a + 2) % 3;
+            if (tiled[p] != 2 * i128{c.hi[b] - c.lo[b]} * (c.hi[d] - c.lo[d]))
+                reject("box face " + std::to_string(p) + " is not tiled: twice-area " + str(tiled[p]));
+        }
+    }
+}
+
 Stats check(const Cert& c) {
     const std::size_t V = c.pos.size(), F = c.faces.size(), C = c.cells.size();
     auto vs = [](std::size_t v) { return "vertex " + std::to_string(v); };
@@ -370,11 +440,7 @@ Stats check(const Cert& c) {
     }
     const std::size_t E = edges.size();
     auto es = [&](std::size_t e) { return "edge " + std::to_string(edges[e].first) + "-" + std::to_string(edges[e].second); };
-    auto loop_of = [&](int h) {  // a half-face's loop in its orientation, from the face's first vertex
-        std::vector<int> l = c.faces[h / 2];
-        if (h % 2) std::reverse(l.begin() + 1, l.end());
-        return l;
-    };
+    auto loop_of = [&](int h) { return half_face_loop(c, h); };
     // cells: closed, connected, consistently oriented, vertex-manifold, V - E + F = 2
     std::vector<std::vector<std::pair<int, int>>> face_cells(F);  // (cell, side)
     for (std::size_t k = 0; k < C; ++k) {
@@ -447,64 +513,8 @@ Stats check(const Cert& c) {
         if (declared[v] != !bdry_v[v])
             reject(vs(v) + (declared[v] ? " is declared interior but lies on a boundary face" : " lies on no boundary face but is not declared interior"));
 
-    // geometry: 6 x signed volume of each cell (fan triangles, relative to the cell's first vertex)
-    auto near = [&](P3 p, P3 ref) { return nearest(c, p, ref); };
     const bool subdivision = c.claims.count("subdivision");
-    if (subdivision) {
-        i128 total = 0;
-        for (std::size_t k = 0; k < C; ++k) {
-            const P3 ref = c.pos[c.faces[c.cells[k][0] / 2][0]];
-            i128 vol = 0;
-            P3 lo = ref, hi = ref;
-            for (int h : c.cells[k]) {
-                auto l = loop_of(h);
-                for (int v : l) {
-                    P3 p = near(c.pos[v], ref);
-                    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-                }
-                P3 o = sub(near(c.pos[l[0]], ref), ref);
-                for (std::size_t j = 1; j + 1 < l.size(); ++j)
-                    vol += dot(o, cross(sub(near(c.pos[l[j]], ref), ref), sub(near(c.pos[l[j + 1]], ref), ref)));
-            }
-            // on the torus a cell must span less than half the period, so that the nearest copies
-            // of any two of its vertices are the ones it uses (a face or edge means one thing)
-            for (int a = 0; a < 3; ++a)
-                if (c.domain == "torus" && 2 * (hi[a] - lo[a]) >= c.period) reject(cs(k) + " spans half the torus period or more");
-            if (vol <= 0) reject(cs(k) + " has non-positive volume (6V = " + str(vol) + ")");
-            total += vol;
-        }
-        i128 expect = 6;
-        for (int a = 0; a < 3; ++a) expect *= c.domain == "torus" ? c.period : c.hi[a] - c.lo[a];
-        if (total != expect) reject("cell volumes sum to " + str(total) + "/6, the domain has " + str(expect) + "/6");
-        if (c.domain == "box") {  // boundary faces tile the six box faces, outward; no interior face on them
-            i128 tiled[6] = {0, 0, 0, 0, 0, 0};
-            for (std::size_t f = 0; f < F; ++f) {
-                int plane = -1;
-                for (int p = 0; p < 6 && plane < 0; ++p) {
-                    bool on = true;
-                    const i64 side = p % 2 ? c.hi[p / 2] : c.lo[p / 2];  // not (p % 2 ? hi : lo)[..]: GCC 12 -O2 UBSan misreports it
-                    for (int v : c.faces[f]) on = on && c.pos[v][p / 2] == side;
-                    if (on) plane = p;
-                }
-                if (face_cells[f].size() == 2) {
-                    if (plane >= 0) reject(fs(f) + " is shared by two cells but lies on the box boundary");
-                    continue;
-                }
-                if (plane < 0) reject(fs(f) + " is a boundary face off the box boundary (a hole)");
-                auto l = loop_of(2 * static_cast<int>(f) + face_cells[f][0].second);
-                i128 out = 0;  // twice the area, along the outward axis
-                for (std::size_t j = 1; j + 1 < l.size(); ++j)
-                    out += (plane % 2 ? 1 : -1) * cross(sub(c.pos[l[j]], c.pos[l[0]]), sub(c.pos[l[j + 1]], c.pos[l[0]]))[plane / 2];
-                if (out <= 0) reject(fs(f) + " on the box boundary does not face outward");
-                tiled[plane] += out;
-            }
-            for (int p = 0; p < 6; ++p) {
-                int a = p / 2, b = (a + 1) % 3, d = (a + 2) % 3;
-                if (tiled[p] != 2 * i128{c.hi[b] - c.lo[b]} * (c.hi[d] - c.lo[d]))
-                    reject("box face " + std::to_string(p) + " is not tiled: twice-area " + str(tiled[p]));
-            }
-        }
-    }
+    if (subdivision) check_volumes(c, face_cells);
 
     // incidences around vertices and edges
     std::vector<std::vector<int>> v_edges(V), v_faces(V), e_faces(E);
