@@ -324,6 +324,61 @@ std::vector<int> half_face_loop(const Cert& c, int h) {  // in its orientation, 
     return l;
 }
 
+// Each cell is closed, connected, consistently oriented, a manifold at each of its vertices
+// and has V - E + F = 2. Returns the cells of each face, (cell, side).
+std::vector<std::vector<std::pair<int, int>>> check_cells(const Cert& c) {
+    const std::size_t C = c.cells.size(), F = c.faces.size();
+    auto vs = [](std::size_t v) { return "vertex " + std::to_string(v); };
+    auto fs = [](std::size_t f) { return "face " + std::to_string(f); };
+    auto cs = [](std::size_t k) { return "cell " + std::to_string(k); };
+    auto loop_of = [&](int h) { return half_face_loop(c, h); };
+    std::vector<std::vector<std::pair<int, int>>> face_cells(F);  // (cell, side)
+    for (std::size_t k = 0; k < C; ++k) {
+        std::map<std::pair<int, int>, int> owner;  // directed edge -> index of the half-face in the cell
+        std::set<int> cell_faces, cell_vertices;
+        const auto& hs = c.cells[k];
+        if (hs.empty()) reject(cs(k) + " has no faces");
+        for (std::size_t i = 0; i < hs.size(); ++i) {
+            if (!cell_faces.insert(hs[i] / 2).second) reject(cs(k) + " lists " + fs(hs[i] / 2) + " twice");
+            face_cells[hs[i] / 2].push_back({static_cast<int>(k), hs[i] % 2});
+            auto l = loop_of(hs[i]);
+            for (std::size_t j = 0; j < l.size(); ++j) {
+                cell_vertices.insert(l[j]);
+                if (!owner.emplace(std::pair{l[j], l[(j + 1) % l.size()]}, static_cast<int>(i)).second)
+                    reject(cs(k) + ": edge " + std::to_string(l[j]) + "->" + std::to_string(l[(j + 1) % l.size()]) +
+                           " walked twice in the same direction (inconsistent orientation or non-manifold edge)");
+            }
+        }
+        std::vector<int> parent(hs.size());  // union-find for connectivity
+        for (std::size_t i = 0; i < hs.size(); ++i) parent[i] = static_cast<int>(i);
+        auto root = [&](int x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
+        for (const auto& [d, i] : owner) {
+            auto back = owner.find({d.second, d.first});
+            if (back == owner.end()) reject(cs(k) + " is open at edge " + std::to_string(d.first) + "-" + std::to_string(d.second));
+            parent[root(i)] = root(back->second);
+        }
+        for (std::size_t i = 0; i < hs.size(); ++i)
+            if (root(static_cast<int>(i)) != root(0)) reject(cs(k) + " is disconnected");
+        // around each vertex the cell's faces form one cycle: walk v->w, then the face of w->v
+        std::map<int, int> corners;
+        for (int h : hs) for (int v : c.faces[h / 2]) ++corners[v];
+        for (auto [v, n] : corners) {
+            int start = -1, steps = 0, cur = -1;
+            for (const auto& [d, i] : owner) if (d.first == v) { start = cur = i; break; }
+            do {
+                auto l = loop_of(hs[cur]);
+                int w = l[(std::find(l.begin(), l.end(), v) - l.begin() + 1) % l.size()];
+                cur = owner.at({w, v});
+                ++steps;
+            } while (cur != start && steps <= n);
+            if (steps != n) reject(cs(k) + " is not a manifold at " + vs(v) + " (its faces there are not one cycle)");
+        }
+        const i64 chi = static_cast<i64>(cell_vertices.size()) - static_cast<i64>(owner.size() / 2) + static_cast<i64>(hs.size());
+        if (chi != 2) reject(cs(k) + " has V - E + F = " + std::to_string(chi) + ", not 2");
+    }
+    return face_cells;
+}
+
 // Claim subdivision, volumes and boundary: every cell has positive volume (6V from the fan
 // triangles, relative to its first vertex), the volumes sum to the domain's, a torus cell
 // spans less than half the period, and in a box the boundary faces tile the box faces.
@@ -440,52 +495,7 @@ Stats check(const Cert& c) {
     }
     const std::size_t E = edges.size();
     auto es = [&](std::size_t e) { return "edge " + std::to_string(edges[e].first) + "-" + std::to_string(edges[e].second); };
-    auto loop_of = [&](int h) { return half_face_loop(c, h); };
-    // cells: closed, connected, consistently oriented, vertex-manifold, V - E + F = 2
-    std::vector<std::vector<std::pair<int, int>>> face_cells(F);  // (cell, side)
-    for (std::size_t k = 0; k < C; ++k) {
-        std::map<std::pair<int, int>, int> owner;  // directed edge -> index of the half-face in the cell
-        std::set<int> cell_faces, cell_vertices;
-        const auto& hs = c.cells[k];
-        if (hs.empty()) reject(cs(k) + " has no faces");
-        for (std::size_t i = 0; i < hs.size(); ++i) {
-            if (!cell_faces.insert(hs[i] / 2).second) reject(cs(k) + " lists " + fs(hs[i] / 2) + " twice");
-            face_cells[hs[i] / 2].push_back({static_cast<int>(k), hs[i] % 2});
-            auto l = loop_of(hs[i]);
-            for (std::size_t j = 0; j < l.size(); ++j) {
-                cell_vertices.insert(l[j]);
-                if (!owner.emplace(std::pair{l[j], l[(j + 1) % l.size()]}, static_cast<int>(i)).second)
-                    reject(cs(k) + ": edge " + std::to_string(l[j]) + "->" + std::to_string(l[(j + 1) % l.size()]) +
-                           " walked twice in the same direction (inconsistent orientation or non-manifold edge)");
-            }
-        }
-        std::vector<int> parent(hs.size());  // union-find for connectivity
-        for (std::size_t i = 0; i < hs.size(); ++i) parent[i] = static_cast<int>(i);
-        auto root = [&](int x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
-        for (const auto& [d, i] : owner) {
-            auto back = owner.find({d.second, d.first});
-            if (back == owner.end()) reject(cs(k) + " is open at edge " + std::to_string(d.first) + "-" + std::to_string(d.second));
-            parent[root(i)] = root(back->second);
-        }
-        for (std::size_t i = 0; i < hs.size(); ++i)
-            if (root(static_cast<int>(i)) != root(0)) reject(cs(k) + " is disconnected");
-        // around each vertex the cell's faces form one cycle: walk v->w, then the face of w->v
-        std::map<int, int> corners;
-        for (int h : hs) for (int v : c.faces[h / 2]) ++corners[v];
-        for (auto [v, n] : corners) {
-            int start = -1, steps = 0, cur = -1;
-            for (const auto& [d, i] : owner) if (d.first == v) { start = cur = i; break; }
-            do {
-                auto l = loop_of(hs[cur]);
-                int w = l[(std::find(l.begin(), l.end(), v) - l.begin() + 1) % l.size()];
-                cur = owner.at({w, v});
-                ++steps;
-            } while (cur != start && steps <= n);
-            if (steps != n) reject(cs(k) + " is not a manifold at " + vs(v) + " (its faces there are not one cycle)");
-        }
-        const i64 chi = static_cast<i64>(cell_vertices.size()) - static_cast<i64>(owner.size() / 2) + static_cast<i64>(hs.size());
-        if (chi != 2) reject(cs(k) + " has V - E + F = " + std::to_string(chi) + ", not 2");
-    }
+    const auto face_cells = check_cells(c);  // (cell, side) of each face
     // conformity; boundary faces; interior vertices and edges = those on no boundary face
     std::vector<char> bdry_v(V, 0), bdry_e(E, 0), used_v(V, 0);
     std::size_t boundary_faces = 0;
