@@ -383,7 +383,7 @@ std::vector<std::pair<std::string, Cert>> mutations(const Cert& c, std::size_t s
 }
 
 struct Tally {
-    std::size_t tried = 0, rejected = 0, accepted = 0;
+    std::size_t tried = 0, rejected = 0, accepted = 0, folds = 0;  // folds: true by volumes, folded at an edge
     std::map<std::string, std::pair<std::size_t, std::size_t>> per_kind;  // tried, rejected
 };
 
@@ -402,7 +402,7 @@ void check_mutations(const std::vector<Cert>& originals, const std::string& tag,
     const fs::path dir = temp_dir(tag);
     write(dir / "mutants.cert", text);
     const CheckerRun r = run_checker("--file " + (dir / "mutants.cert").string());
-    std::set<std::size_t> rejected;
+    std::set<std::size_t> rejected, folded;  // folded: rejected by the checker's edge-winding test
     std::istringstream lines(r.out);
     for (std::string line; std::getline(lines, line);) {
         if (line.rfind("REJECTED", 0) != 0) continue;
@@ -412,9 +412,18 @@ void check_mutations(const std::vector<Cert>& originals, const std::string& tag,
         else if ((at = line.find("certificate #")) != std::string::npos) id = std::stoul(line.substr(at + 13));
         ASSERT_GT(id, 0u) << line;
         rejected.insert(id);
+        if (line.find("not exactly once (overlap or fold)") != std::string::npos) folded.insert(id);
     }
     for (std::size_t i = 0; i < expected.size(); ++i) {
         const bool rej = rejected.count(i + 1) > 0;
+        // dualhex's truth checks volumes, not folds: a vertex moved by one unit can fold the
+        // fan faces around an edge while every volume stays positive (see
+        // test_proofs_checker_hostile.cpp for one confirmed by exact ray casting). Only there
+        // may the checker be stricter than that truth, and only by the edge test.
+        if (rej && expected[i].second && expected[i].first == "move vertex" && folded.count(i + 1)) {
+            ++tally.folds;
+            continue;
+        }
         EXPECT_EQ(rej, !expected[i].second) << tag << " mutation m" << i + 1 << " (" << expected[i].first
                                             << "): checker " << (rej ? "rejected" : "accepted") << ", truth "
                                             << (expected[i].second ? "true" : "false");
@@ -441,7 +450,8 @@ std::vector<std::string> split_certificates(const std::string& text) {
 
 void report(const Tally& tally) {
     std::cout << "[ mutations ] tried " << tally.tried << ", rejected " << tally.rejected << ", accepted "
-              << tally.accepted << " (accepted only where the truth holds)\n";
+              << tally.accepted << " (accepted only where the truth holds), " << tally.folds
+              << " moved vertices true by dualhex's volumes but rejected as folds at an edge\n";
     for (const auto& [what, n] : tally.per_kind)
         std::cout << "    " << what << ": " << n.first << " tried, " << n.second << " rejected\n";
 }

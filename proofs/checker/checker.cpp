@@ -19,13 +19,21 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace {
 
 using i64 = std::int64_t;
+__extension__ typedef __int128 i128;  // GCC and Clang; every product below is bounded to fit (README, Bounds)
 using P3 = std::array<i64, 3>;
-constexpr i64 kMaxExtent = i64{1} << 19;  // keeps every exact volume sum inside int64
+// Every coordinate, box bound and period lies in [-2^19, 2^19], so a difference of two
+// coordinates is at most 2^20, a cross product component at most 2^41, a triple product at
+// most 3 * 2^61 < 2^63; sums of up to 2^28 such terms (the file cap) are taken in 128 bits.
+constexpr i64 kMaxCoord = i64{1} << 19;
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{256} << 20;    // one file
+constexpr std::uintmax_t kMaxManifestBytes = std::uintmax_t{1} << 30;  // all files of a manifest
+constexpr std::size_t kMaxFaceSize = 64;  // vertices of one face: keeps every per-face search linear in all
 
 struct Reject {  // one certificate (or file) is rejected, with the reason
     std::string why;
@@ -65,6 +73,11 @@ i64 to_int(const std::string& t, int line) {
     if (ec != std::errc() || p != t.data() + t.size()) reject("line " + std::to_string(line) + ": not an integer: '" + t + "'");
     return v;
 }
+i64 to_coord(const std::string& t, int line) {  // an integer in [-2^19, 2^19]
+    const i64 v = to_int(t, line);
+    if (v < -kMaxCoord || v > kMaxCoord) reject("line " + std::to_string(line) + ": coordinate " + t + " outside [-2^19, 2^19]");
+    return v;
+}
 
 struct Cert {
     std::string name, kind, domain;  // domain: box | torus | none
@@ -90,10 +103,11 @@ Cert parse(const std::vector<Line>& L, std::size_t& at) {
         if (i >= L.size()) reject("truncated: the file ends inside the certificate (no 'end')");
         return L[i];
     };
-    auto count_of = [&](const Line& l) {
+    auto count_of = [&](const Line& l, std::size_t most) {  // a count, at most `most` (what can follow)
         if (l.tok.size() != 2) reject("line " + std::to_string(l.number) + ": expected '" + l.tok[0] + " COUNT'");
         i64 n = to_int(l.tok[1], l.number);
-        if (n < 0 || n > 100000000) reject("line " + std::to_string(l.number) + ": bad count");
+        if (n < 0 || static_cast<std::uint64_t>(n) > most)
+            reject("line " + std::to_string(l.number) + ": bad count " + l.tok[1] + " (0.." + std::to_string(most) + " possible here)");
         return static_cast<std::size_t>(n);
     };
     std::set<std::string> seen;
@@ -109,31 +123,31 @@ Cert parse(const std::vector<Line>& L, std::size_t& at) {
         } else if (key == "domain") {
             c.domain = l.tok.size() > 1 ? l.tok[1] : "";
             if (c.domain == "box" && l.tok.size() == 8) {
-                for (int a = 0; a < 3; ++a) c.lo[a] = to_int(l.tok[2 + a], l.number), c.hi[a] = to_int(l.tok[5 + a], l.number);
+                for (int a = 0; a < 3; ++a) c.lo[a] = to_coord(l.tok[2 + a], l.number), c.hi[a] = to_coord(l.tok[5 + a], l.number);
                 for (int a = 0; a < 3; ++a)
-                    if (c.hi[a] <= c.lo[a] || c.hi[a] - c.lo[a] > kMaxExtent || std::abs(c.lo[a]) > kMaxExtent)
-                        reject(where + "bad box");
+                    if (c.hi[a] <= c.lo[a]) reject(where + "bad box (empty on axis " + std::to_string(a) + ")");
             } else if (c.domain == "torus" && l.tok.size() == 3) {
-                c.period = to_int(l.tok[2], l.number);
-                if (c.period < 2 || c.period % 2 || c.period > kMaxExtent) reject(where + "bad torus period");
+                c.period = to_coord(l.tok[2], l.number);
+                if (c.period < 2 || c.period % 2) reject(where + "bad torus period");
             } else if (!(c.domain == "none" && l.tok.size() == 2)) {
                 reject(where + "expected 'domain box X0 Y0 Z0 X1 Y1 Z1', 'domain torus P' or 'domain none'");
             }
         } else if (key == "vertices") {
-            std::size_t n = count_of(l);
+            std::size_t n = count_of(l, L.size() - at);
             for (std::size_t i = 0; i < n; ++i) {
                 const Line& v = need(at++);
                 if (v.tok.size() != 3) reject("line " + std::to_string(v.number) + ": vertex " + std::to_string(i) + ": expected 'x y z'");
                 P3 p{};
-                for (int a = 0; a < 3; ++a) p[a] = to_int(v.tok[a], v.number);
+                for (int a = 0; a < 3; ++a) p[a] = to_coord(v.tok[a], v.number);
                 c.pos.push_back(p);
             }
         } else if (key == "faces" || key == "cells") {
             if (key == "faces" ? !seen.count("vertices") : !seen.count("faces"))
                 reject(where + (key == "faces" ? "faces before vertices" : "cells before faces"));
-            std::size_t n = count_of(l), bound = key == "faces" ? c.pos.size() : c.faces.size();
+            std::size_t n = count_of(l, L.size() - at), bound = key == "faces" ? c.pos.size() : c.faces.size();
             for (std::size_t i = 0; i < n; ++i) {
                 const Line& r = need(at++);
+                if (key == "faces" && r.tok.size() > kMaxFaceSize) reject("line " + std::to_string(r.number) + ": face " + std::to_string(i) + " has more than 64 vertices");
                 std::vector<int> row;
                 for (const std::string& t : r.tok) {
                     const bool cell = key == "cells";
@@ -150,7 +164,7 @@ Cert parse(const std::vector<Line>& L, std::size_t& at) {
             if (l.tok.size() == 2 && l.tok[1] == "all") {
                 c.interior_all = true;
             } else {
-                std::size_t n = count_of(l);
+                std::size_t n = count_of(l, c.pos.size());
                 std::vector<std::string> ids;
                 while (ids.size() < n) {
                     const Line& r = need(at++);
@@ -179,12 +193,12 @@ Cert parse(const std::vector<Line>& L, std::size_t& at) {
 
 // ---------------------------------------------------------------- checking
 struct Stats {
-    std::size_t vertices = 0, edges = 0, faces = 0, cells = 0, interior_vertices = 0, interior_edges = 0, cubes = 0;
+    std::size_t vertices = 0, edges = 0, faces = 0, cells = 0, interior_vertices = 0, interior_edges = 0, cubes = 0, wound_edges = 0;
 };
 
 std::string hist_string(const std::map<i64, i64>& h) {
     std::string s;
-    for (auto [k, n] : h) s += (s.empty() ? "" : " ") + std::to_string(k) + ":" + std::to_string(n);
+    for (auto [k, n] : h) s.append(s.empty() ? "" : " ").append(std::to_string(k)).append(":").append(std::to_string(n));
     return s.empty() ? "(empty)" : s;
 }
 
@@ -200,70 +214,124 @@ std::map<i64, i64> parse_hist(const std::vector<std::string>& args) {
     return h;
 }
 
-// i64 cross/dot helpers
+// Exact vector arithmetic. sub and cross take differences of coordinates (|x| <= 2^20), so a
+// cross component is at most 2^41; dot and det multiply such vectors in 128 bits.
+using W3 = std::array<i128, 3>;
 P3 sub(P3 a, P3 b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 P3 cross(P3 a, P3 b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-i64 dot(P3 a, P3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+W3 wide_cross(P3 a, P3 b) {
+    return {i128{a[1]} * b[2] - i128{a[2]} * b[1], i128{a[2]} * b[0] - i128{a[0]} * b[2], i128{a[0]} * b[1] - i128{a[1]} * b[0]};
+}
+i128 dot(P3 a, P3 b) { return i128{a[0]} * b[0] + i128{a[1]} * b[1] + i128{a[2]} * b[2]; }
+// u . (x cross y) with |u| <= 2^20 and |x|, |y| <= 2^41: at most 3 * 2^20 * 2^83 < 2^127
+i128 det(P3 u, P3 x, P3 y) {
+    W3 c = wide_cross(x, y);
+    return u[0] * c[0] + u[1] * c[1] + u[2] * c[2];
+}
+std::string str(i128 v) { return v < 0 ? "-" + str(-v) : (v >= 10 ? str(v / 10) : "") + char('0' + int(v % 10)); }
 
-Stats check(const Cert& c) {
-    const std::size_t V = c.pos.size(), F = c.faces.size(), C = c.cells.size();
+P3 nearest(const Cert& c, P3 p, P3 ref) {  // torus: the copy of p nearest to ref
+    if (c.domain != "torus") return p;
+    for (int a = 0; a < 3; ++a) {
+        i64 d = ((p[a] - ref[a]) % c.period + c.period) % c.period;
+        p[a] = ref[a] + (d > c.period / 2 ? d - c.period : d);
+    }
+    return p;
+}
+
+// Face f as a surface is the fan of triangles (l0, lj, lj+1) of its loop l. Returns, for each
+// loop edge i (li -> li+1), the normal of the sheet of f at that edge in the listed
+// orientation: the normal of the fan triangle holding the edge, or, where that triangle is
+// degenerate (three collinear vertices), the plane's normal of a planar face (all its
+// non-degenerate fan triangles with normals in one direction). Rejects a face without area.
+std::vector<P3> face_sheets(const Cert& c, std::size_t f) {
+    const auto& l = c.faces[f];
+    const std::size_t n = l.size();
+    const P3 o = c.pos[l[0]];
+    auto at = [&](std::size_t j) { return sub(nearest(c, c.pos[l[j]], o), o); };
+    std::vector<P3> tri(n - 1, P3{0, 0, 0});  // tri[j]: triangle (l0, lj, lj+1), j = 1..n-2
+    const P3 zero{0, 0, 0};
+    P3 first = zero;
+    bool planar = true;
+    for (std::size_t j = 1; j + 1 < n; ++j) {
+        if ((tri[j] = cross(at(j), at(j + 1))) == zero) continue;
+        if (first == zero) first = tri[j];
+        planar = planar && wide_cross(first, tri[j]) == W3{0, 0, 0} && dot(first, tri[j]) > 0;
+    }
+    if (first == zero) reject("face " + std::to_string(f) + " has no area (its vertices are collinear)");
+    std::vector<P3> sheet(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        sheet[i] = tri[std::clamp<std::size_t>(i, 1, n - 2)];
+        if (sheet[i] == zero && !planar) reject("face " + std::to_string(f) + " is not planar and degenerate at its edge " + std::to_string(i));
+        if (sheet[i] == zero) sheet[i] = first;
+    }
+    return sheet;
+}
+
+// Local injectivity at edge e = (a, b), u = b - a: each cell k at e has a wedge, turning
+// positively about u from the sheet of its face that walks b -> a to that of its face that
+// walks a -> b. Going from cell to cell, the sheets' angles never pass the first sheet's
+// but once: an interior edge's wedges turn exactly once around u; a boundary edge's (box)
+// run from one boundary face to the other without passing it, turning by at most pi (the
+// box's angle there: a half-turn inside a box face, a quarter at a box edge). A wedge whose
+// two sheets agree counts as empty (proofs/README.md, "What subdivision proves").
+void check_edge_winding(const Cert& c, std::pair<int, int> e, const std::vector<std::pair<int, int>>& uses,
+                        const std::vector<std::vector<P3>>& sheets, const std::vector<std::vector<std::pair<int, int>>>& face_cells) {
+    const std::string es = "edge " + std::to_string(e.first) + "-" + std::to_string(e.second);
+    const P3 a = c.pos[e.first], u = sub(nearest(c, c.pos[e.second], a), a);
+    std::map<int, std::array<int, 2>> role;  // cell -> the use (index in uses) walking a -> b, b -> a
+    std::vector<P3> dir(uses.size());         // each use's sheet normal, oriented as walked a -> b
+    int start = -1, starts = 0, ends = 0;
+    for (std::size_t j = 0; j < uses.size(); ++j) {
+        auto [f, i] = uses[j];
+        const bool fwd = c.faces[f][i] == e.first;
+        dir[j] = sheets[f][i];
+        if (!fwd) for (auto& x : dir[j]) x = -x;
+        for (auto [k, side] : face_cells[f]) {
+            const int r = fwd != (side == 1) ? 0 : 1;  // 0: the cell walks a -> b
+            auto& slot = role.try_emplace(k, std::array<int, 2>{-1, -1}).first->second;
+            slot[r] = static_cast<int>(j);
+            if (face_cells[f].size() == 1) r ? (start = k, ++starts) : ++ends;
+        }
+    }
+    if (starts + ends && (starts != 1 || ends != 1)) reject(es + " has boundary faces that are not one on each side");
+    for (const auto& [k, slot] : role)
+        if (slot[0] < 0 || slot[1] < 0) reject(es + ": cell " + std::to_string(k) + " does not pass it both ways");
+    if (start < 0) start = role.begin()->first;
+    std::vector<P3> D{dir[role[start][1]]};
+    std::size_t steps = 0;
+    for (int k = start; steps <= role.size();) {  // next cell: the other one of the face k walks a -> b
+        const int j = role[k][0];
+        D.push_back(dir[j]);
+        ++steps;
+        const auto& fc = face_cells[uses[j].first];
+        if (fc.size() == 1 || (k = fc[0].first == k ? fc[1].first : fc[0].first) == start) break;
+    }
+    if (steps != role.size()) reject(es + ": its cells are not one cycle or fan around it");
+    const P3 r = D[0];
+    auto half = [&](P3 w) { i128 s = det(u, r, w); return s > 0 || (s == 0 && dot(r, w) > 0) ? 0 : 1; };
+    auto before = [&](P3 x, P3 y) { return half(x) != half(y) ? half(x) < half(y) : det(u, x, y) > 0; };
+    std::size_t turns = 0;  // a wedge is empty (its sheets agree) or turns by the angle to the next sheet
+    for (std::size_t i = 1; i < D.size(); ++i) turns += before(D[i], D[i - 1]);  // passing the reference again
+    if (turns != (starts ? 0u : 1u) || (starts && !before(r, D.back())))
+        reject(es + ": the cells around it turn " + std::to_string(turns) + " times around it, not exactly once (overlap or fold)");
+    if (starts && half(D.back()) && det(u, r, D.back()) != 0) reject(es + ": the cells at this boundary edge turn by more than a half-turn");
+}
+
+std::vector<int> half_face_loop(const Cert& c, int h) {  // in its orientation, from the face's first vertex
+    std::vector<int> l = c.faces[h / 2];
+    if (h % 2) std::reverse(l.begin() + 1, l.end());
+    return l;
+}
+
+// Each cell is closed, connected, consistently oriented, a manifold at each of its vertices
+// and has V - E + F = 2. Returns the cells of each face, (cell, side).
+std::vector<std::vector<std::pair<int, int>>> check_cells(const Cert& c) {
+    const std::size_t C = c.cells.size(), F = c.faces.size();
     auto vs = [](std::size_t v) { return "vertex " + std::to_string(v); };
     auto fs = [](std::size_t f) { return "face " + std::to_string(f); };
     auto cs = [](std::size_t k) { return "cell " + std::to_string(k); };
-    // what each kind must claim, and where it lives
-    const std::map<std::string, std::pair<std::string, std::vector<std::string>>> kinds = {
-        {"element", {"box", {"subdivision"}}},
-        {"configuration", {"torus", {"subdivision", "valences", "all-hex-dual"}}},
-        {"installation", {"box", {"subdivision", "valences", "all-hex-dual"}}},
-        {"histogram", {"", {}}}};
-    auto k = kinds.find(c.kind);
-    if (k == kinds.end()) reject("unknown kind '" + c.kind + "'");
-    if (!k->second.first.empty() && c.domain != k->second.first) reject("kind " + c.kind + " needs domain " + k->second.first);
-    for (const std::string& cl : k->second.second)
-        if (!c.claims.count(cl)) reject("kind " + c.kind + " must claim '" + cl + "'");
-    for (const auto& [cl, args] : c.claims)
-        if (!std::set<std::string>{"subdivision", "valences", "all-hex-dual", "counts", "face-sizes", "dual-valences", "interior-vertices"}.count(cl))
-            reject("unknown claim '" + cl + "'");
-    if (c.claims.count("subdivision") && c.domain == "none") reject("claim subdivision needs a box or torus domain");
-
-    // vertices: distinct positions, inside the domain
-    std::set<P3> where;
-    for (std::size_t v = 0; v < V; ++v) {
-        for (int a = 0; a < 3; ++a) {
-            i64 x = c.pos[v][a];
-            if (c.domain == "box" && (x < c.lo[a] || x > c.hi[a])) reject(vs(v) + " lies outside the box");
-            if (c.domain == "torus" && (x < 0 || x >= c.period)) reject(vs(v) + " is not reduced modulo the period");
-            if (std::abs(x) > 2 * kMaxExtent) reject(vs(v) + ": coordinate too large");
-        }
-        if (!where.insert(c.pos[v]).second) reject(vs(v) + " repeats the position of an earlier vertex");
-    }
-    // faces: simple loops of >= 3 distinct vertices, no two faces on the same vertex set; edges
-    std::map<std::pair<int, int>, int> edge_id;
-    std::vector<std::pair<int, int>> edges;
-    std::vector<std::vector<int>> face_edges(F);
-    std::map<std::vector<int>, std::size_t> face_by_set;
-    for (std::size_t f = 0; f < F; ++f) {
-        std::vector<int> s = c.faces[f];
-        std::sort(s.begin(), s.end());
-        if (c.faces[f].size() < 3) reject(fs(f) + " has fewer than 3 vertices");
-        if (std::adjacent_find(s.begin(), s.end()) != s.end()) reject(fs(f) + " repeats a vertex (not a simple polygon)");
-        if (auto [it, fresh] = face_by_set.emplace(s, f); !fresh) reject(fs(f) + " has the same vertices as " + fs(it->second));
-        const auto& loop = c.faces[f];
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            std::pair<int, int> e = std::minmax(loop[i], loop[(i + 1) % loop.size()]);
-            auto [it, fresh] = edge_id.emplace(e, static_cast<int>(edges.size()));
-            if (fresh) edges.push_back(e);
-            face_edges[f].push_back(it->second);
-        }
-    }
-    const std::size_t E = edges.size();
-    auto es = [&](std::size_t e) { return "edge " + std::to_string(edges[e].first) + "-" + std::to_string(edges[e].second); };
-    auto loop_of = [&](int h) {  // a half-face's loop in its orientation, from the face's first vertex
-        std::vector<int> l = c.faces[h / 2];
-        if (h % 2) std::reverse(l.begin() + 1, l.end());
-        return l;
-    };
-    // cells: closed, connected, consistently oriented, vertex-manifold, V - E + F = 2
+    auto loop_of = [&](int h) { return half_face_loop(c, h); };
     std::vector<std::vector<std::pair<int, int>>> face_cells(F);  // (cell, side)
     for (std::size_t k = 0; k < C; ++k) {
         std::map<std::pair<int, int>, int> owner;  // directed edge -> index of the half-face in the cell
@@ -308,6 +376,126 @@ Stats check(const Cert& c) {
         const i64 chi = static_cast<i64>(cell_vertices.size()) - static_cast<i64>(owner.size() / 2) + static_cast<i64>(hs.size());
         if (chi != 2) reject(cs(k) + " has V - E + F = " + std::to_string(chi) + ", not 2");
     }
+    return face_cells;
+}
+
+// Claim subdivision, volumes and boundary: every cell has positive volume (6V from the fan
+// triangles, relative to its first vertex), the volumes sum to the domain's, a torus cell
+// spans less than half the period, and in a box the boundary faces tile the box faces.
+void check_volumes(const Cert& c, const std::vector<std::vector<std::pair<int, int>>>& face_cells) {
+    const std::size_t C = c.cells.size(), F = c.faces.size();
+    auto cs = [](std::size_t k) { return "cell " + std::to_string(k); };
+    auto fs = [](std::size_t f) { return "face " + std::to_string(f); };
+    auto loop_of = [&](int h) { return half_face_loop(c, h); };
+    auto near = [&](P3 p, P3 ref) { return nearest(c, p, ref); };
+    i128 total = 0;
+    for (std::size_t k = 0; k < C; ++k) {
+        const P3 ref = c.pos[c.faces[c.cells[k][0] / 2][0]];
+        i128 vol = 0;
+        P3 lo = ref, hi = ref;
+        for (int h : c.cells[k]) {
+            auto l = loop_of(h);
+            for (int v : l) {
+                P3 p = near(c.pos[v], ref);
+                for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+            }
+            P3 o = sub(near(c.pos[l[0]], ref), ref);
+            for (std::size_t j = 1; j + 1 < l.size(); ++j)
+                vol += dot(o, cross(sub(near(c.pos[l[j]], ref), ref), sub(near(c.pos[l[j + 1]], ref), ref)));
+        }
+        // on the torus a cell must span less than half the period, so that the nearest copies
+        // of any two of its vertices are the ones it uses (a face or edge means one thing)
+        for (int a = 0; a < 3; ++a)
+            if (c.domain == "torus" && 2 * (hi[a] - lo[a]) >= c.period) reject(cs(k) + " spans half the torus period or more");
+        if (vol <= 0) reject(cs(k) + " has non-positive volume (6V = " + str(vol) + ")");
+        total += vol;
+    }
+    i128 expect = 6;
+    for (int a = 0; a < 3; ++a) expect *= c.domain == "torus" ? c.period : c.hi[a] - c.lo[a];
+    if (total != expect) reject("cell volumes sum to " + str(total) + "/6, the domain has " + str(expect) + "/6");
+    if (c.domain == "box") {  // boundary faces tile the six box faces, outward; no interior face on them
+        i128 tiled[6] = {0, 0, 0, 0, 0, 0};
+        for (std::size_t f = 0; f < F; ++f) {
+            int plane = -1;
+            for (int p = 0; p < 6 && plane < 0; ++p) {
+                bool on = true;
+                const i64 side = p % 2 ? c.hi[p / 2] : c.lo[p / 2];  // not (p % 2 ? hi : lo)[..]: GCC 12 -O2 UBSan misreports it
+                for (int v : c.faces[f]) on = on && c.pos[v][p / 2] == side;
+                if (on) plane = p;
+            }
+            if (face_cells[f].size() == 2) {
+                if (plane >= 0) reject(fs(f) + " is shared by two cells but lies on the box boundary");
+                continue;
+            }
+            if (plane < 0) reject(fs(f) + " is a boundary face off the box boundary (a hole)");
+            auto l = loop_of(2 * static_cast<int>(f) + face_cells[f][0].second);
+            i128 out = 0;  // twice the area, along the outward axis
+            for (std::size_t j = 1; j + 1 < l.size(); ++j)
+                out += (plane % 2 ? 1 : -1) * cross(sub(c.pos[l[j]], c.pos[l[0]]), sub(c.pos[l[j + 1]], c.pos[l[0]]))[plane / 2];
+            if (out <= 0) reject(fs(f) + " on the box boundary does not face outward");
+            tiled[plane] += out;
+        }
+        for (int p = 0; p < 6; ++p) {
+            int a = p / 2, b = (a + 1) % 3, d = (a + 2) % 3;
+            if (tiled[p] != 2 * i128{c.hi[b] - c.lo[b]} * (c.hi[d] - c.lo[d]))
+                reject("box face " + std::to_string(p) + " is not tiled: twice-area " + str(tiled[p]));
+        }
+    }
+}
+
+Stats check(const Cert& c) {
+    const std::size_t V = c.pos.size(), F = c.faces.size(), C = c.cells.size();
+    auto vs = [](std::size_t v) { return "vertex " + std::to_string(v); };
+    auto fs = [](std::size_t f) { return "face " + std::to_string(f); };
+    auto cs = [](std::size_t k) { return "cell " + std::to_string(k); };
+    // what each kind must claim, and where it lives
+    const std::map<std::string, std::pair<std::string, std::vector<std::string>>> kinds = {
+        {"element", {"box", {"subdivision"}}},
+        {"configuration", {"torus", {"subdivision", "valences", "all-hex-dual"}}},
+        {"installation", {"box", {"subdivision", "valences", "all-hex-dual"}}},
+        {"histogram", {"", {}}}};
+    auto k = kinds.find(c.kind);
+    if (k == kinds.end()) reject("unknown kind '" + c.kind + "'");
+    if (!k->second.first.empty() && c.domain != k->second.first) reject("kind " + c.kind + " needs domain " + k->second.first);
+    for (const std::string& cl : k->second.second)
+        if (!c.claims.count(cl)) reject("kind " + c.kind + " must claim '" + cl + "'");
+    for (const auto& [cl, args] : c.claims)
+        if (!std::set<std::string>{"subdivision", "valences", "all-hex-dual", "counts", "face-sizes", "dual-valences", "interior-vertices"}.count(cl))
+            reject("unknown claim '" + cl + "'");
+    if (c.claims.count("subdivision") && c.domain == "none") reject("claim subdivision needs a box or torus domain");
+
+    // vertices: distinct positions, inside the domain
+    std::set<P3> where;
+    for (std::size_t v = 0; v < V; ++v) {
+        for (int a = 0; a < 3; ++a) {
+            i64 x = c.pos[v][a];
+            if (c.domain == "box" && (x < c.lo[a] || x > c.hi[a])) reject(vs(v) + " lies outside the box");
+            if (c.domain == "torus" && (x < 0 || x >= c.period)) reject(vs(v) + " is not reduced modulo the period");
+        }
+        if (!where.insert(c.pos[v]).second) reject(vs(v) + " repeats the position of an earlier vertex");
+    }
+    // faces: simple loops of >= 3 distinct vertices, no two faces on the same vertex set; edges
+    std::map<std::pair<int, int>, int> edge_id;
+    std::vector<std::pair<int, int>> edges;
+    std::vector<std::vector<int>> face_edges(F);
+    std::map<std::vector<int>, std::size_t> face_by_set;
+    for (std::size_t f = 0; f < F; ++f) {
+        std::vector<int> s = c.faces[f];
+        std::sort(s.begin(), s.end());
+        if (c.faces[f].size() < 3) reject(fs(f) + " has fewer than 3 vertices");
+        if (std::adjacent_find(s.begin(), s.end()) != s.end()) reject(fs(f) + " repeats a vertex (not a simple polygon)");
+        if (auto [it, fresh] = face_by_set.emplace(s, f); !fresh) reject(fs(f) + " has the same vertices as " + fs(it->second));
+        const auto& loop = c.faces[f];
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            std::pair<int, int> e = std::minmax(loop[i], loop[(i + 1) % loop.size()]);
+            auto [it, fresh] = edge_id.emplace(e, static_cast<int>(edges.size()));
+            if (fresh) edges.push_back(e);
+            face_edges[f].push_back(it->second);
+        }
+    }
+    const std::size_t E = edges.size();
+    auto es = [&](std::size_t e) { return "edge " + std::to_string(edges[e].first) + "-" + std::to_string(edges[e].second); };
+    const auto face_cells = check_cells(c);  // (cell, side) of each face
     // conformity; boundary faces; interior vertices and edges = those on no boundary face
     std::vector<char> bdry_v(V, 0), bdry_e(E, 0), used_v(V, 0);
     std::size_t boundary_faces = 0;
@@ -335,64 +523,8 @@ Stats check(const Cert& c) {
         if (declared[v] != !bdry_v[v])
             reject(vs(v) + (declared[v] ? " is declared interior but lies on a boundary face" : " lies on no boundary face but is not declared interior"));
 
-    // geometry: 6 x signed volume of each cell (fan triangles, relative to the cell's first vertex)
-    if (c.claims.count("subdivision")) {
-        auto unwrap = [&](P3 p, P3 ref) {  // torus: the copy of p nearest to ref
-            if (c.domain != "torus") return p;
-            for (int a = 0; a < 3; ++a) {
-                i64 d = ((p[a] - ref[a]) % c.period + c.period) % c.period;
-                p[a] = ref[a] + (d > c.period / 2 ? d - c.period : d);
-            }
-            return p;
-        };
-        i64 total = 0;
-        for (std::size_t k = 0; k < C; ++k) {
-            const P3 ref = c.pos[c.faces[c.cells[k][0] / 2][0]];
-            i64 vol = 0;
-            for (int h : c.cells[k]) {
-                auto l = loop_of(h);
-                P3 a = sub(unwrap(c.pos[l[0]], ref), ref);
-                for (std::size_t j = 1; j + 1 < l.size(); ++j)
-                    vol += dot(a, cross(sub(unwrap(c.pos[l[j]], ref), ref), sub(unwrap(c.pos[l[j + 1]], ref), ref)));
-            }
-            if (vol <= 0) reject(cs(k) + " has non-positive volume (6V = " + std::to_string(vol) + ")");
-            total += vol;
-        }
-        i64 expect = 6;
-        for (int a = 0; a < 3; ++a) expect *= c.domain == "torus" ? c.period : c.hi[a] - c.lo[a];
-        if (total != expect) reject("cell volumes sum to " + std::to_string(total) + "/6, the domain has " + std::to_string(expect) + "/6");
-        if (c.domain == "box") {  // boundary faces tile the six box faces, outward; no interior face on them
-            i64 tiled[6] = {0, 0, 0, 0, 0, 0};
-            for (std::size_t f = 0; f < F; ++f) {
-                int plane = -1;
-                for (int p = 0; p < 6 && plane < 0; ++p) {
-                    bool on = true;
-                    const i64 side = p % 2 ? c.hi[p / 2] : c.lo[p / 2];  // not (p % 2 ? hi : lo)[..]: GCC 12 -O2 UBSan misreports it
-                    for (int v : c.faces[f]) on = on && c.pos[v][p / 2] == side;
-                    if (on) plane = p;
-                }
-                if (face_cells[f].size() == 2) {
-                    if (plane >= 0) reject(fs(f) + " is shared by two cells but lies on the box boundary");
-                    continue;
-                }
-                if (plane < 0) reject(fs(f) + " is a boundary face off the box boundary (a hole)");
-                auto l = loop_of(2 * static_cast<int>(f) + face_cells[f][0].second);
-                P3 area{0, 0, 0};
-                for (std::size_t j = 1; j + 1 < l.size(); ++j) {
-                    P3 t = cross(sub(c.pos[l[j]], c.pos[l[0]]), sub(c.pos[l[j + 1]], c.pos[l[0]]));
-                    for (int a = 0; a < 3; ++a) area[a] += t[a];
-                }
-                i64 out = (plane % 2 ? 1 : -1) * area[plane / 2];
-                if (out <= 0) reject(fs(f) + " on the box boundary does not face outward");
-                tiled[plane] += out;
-            }
-            for (int p = 0; p < 6; ++p) {
-                int a = p / 2, b = (a + 1) % 3, d = (a + 2) % 3;
-                if (tiled[p] != 2 * (c.hi[b] - c.lo[b]) * (c.hi[d] - c.lo[d]))
-                    reject("box face " + std::to_string(p) + " is not tiled: twice-area " + std::to_string(tiled[p]));
-            }
-        }
-    }
+    const bool subdivision = c.claims.count("subdivision");
+    if (subdivision) check_volumes(c, face_cells);
 
     // incidences around vertices and edges
     std::vector<std::vector<int>> v_edges(V), v_faces(V), e_faces(E);
@@ -401,12 +533,22 @@ Stats check(const Cert& c) {
         for (int v : c.faces[f]) v_faces[v].push_back(static_cast<int>(f));
         for (int e : face_edges[f]) e_faces[e].push_back(static_cast<int>(f));
     }
+    Stats st{V, E, F, C, 0, 0, 0, 0};
+    if (subdivision) {  // local injectivity at every edge
+        std::vector<std::vector<P3>> sheets(F);
+        std::vector<std::vector<std::pair<int, int>>> uses(E);  // edge -> (face, loop index)
+        for (std::size_t f = 0; f < F; ++f) {
+            sheets[f] = face_sheets(c, f);
+            for (std::size_t i = 0; i < face_edges[f].size(); ++i) uses[face_edges[f][i]].push_back({static_cast<int>(f), static_cast<int>(i)});
+        }
+        for (std::size_t e = 0; e < E; ++e) check_edge_winding(c, edges[e], uses[e], sheets, face_cells);
+        st.wound_edges = E;
+    }
     auto edges_at = [&](std::size_t f, int v) {  // the two edges of face f at its vertex v
         const auto& l = c.faces[f];
         std::size_t i = std::find(l.begin(), l.end(), v) - l.begin(), n = l.size();
         return std::pair{face_edges[f][(i + n - 1) % n], face_edges[f][i]};
     };
-    Stats st{V, E, F, C, 0, 0, 0};
     const bool valences = c.claims.count("valences"), dual = c.claims.count("all-hex-dual");
     for (std::size_t v = 0; v < V; ++v) {
         if (bdry_v[v]) continue;
@@ -503,7 +645,7 @@ Stats check(const Cert& c) {
 std::string with_commas(std::size_t n) {
     const std::string d = std::to_string(n);
     std::string s;
-    for (std::size_t i = 0; i < d.size(); ++i) s += (i && (d.size() - i) % 3 == 0 ? "," : "") + d.substr(i, 1);
+    for (std::size_t i = 0; i < d.size(); ++i) s.append(i && (d.size() - i) % 3 == 0 ? "," : "").push_back(d[i]);
     return s;
 }
 
@@ -516,15 +658,16 @@ struct Totals {
 };
 
 // Checks every certificate of one file; returns how many it holds and the kinds found.
-std::size_t check_file(const std::filesystem::path& path, const std::string& text, Totals& t, std::set<std::string>& kinds) {
+std::size_t check_file(const std::string& path, const std::string& text, Totals& t, std::set<std::string>& kinds) {
     auto L = tokenize(text);
     std::size_t n = 0, at = 0;
     while (at < L.size()) {
         ++n;
-        std::string label = path.string() + ": certificate #" + std::to_string(n);
+        const std::size_t first = at;
+        std::string label = path + ": certificate #" + std::to_string(n);
         try {
             Cert c = parse(L, at);
-            label = path.string() + ":" + std::to_string(c.first_line) + ": certificate " + c.name;
+            label = path + ":" + std::to_string(c.first_line) + ": certificate " + c.name;
             if (!t.names.insert(c.name).second) reject("the name " + c.name + " is used twice");
             Stats s = check(c);
             for (i64 x : c.covers)
@@ -533,77 +676,96 @@ std::size_t check_file(const std::filesystem::path& path, const std::string& tex
             kinds.insert(c.kind);
             t.sum.vertices += s.vertices, t.sum.edges += s.edges, t.sum.faces += s.faces, t.sum.cells += s.cells;
             t.sum.interior_vertices += s.interior_vertices, t.sum.interior_edges += s.interior_edges, t.sum.cubes += s.cubes;
+            t.sum.wound_edges += s.wound_edges;
         } catch (const Reject& r) {
             std::cout << "REJECTED " << label << ": " << r.why << '\n';
             ++t.rejected;
-            while (at < L.size() && L[at].tok[0] != "dualhex-certificate") ++at;  // resynchronise
+            at = std::max(at, first + 1);  // resynchronise after the failing line, at the next certificate
+            while (at < L.size() && L[at].tok[0] != "dualhex-certificate") ++at;
         }
     }
     t.certificates += n;
     return n;
 }
 
-bool read_file(const std::filesystem::path& p, std::string& out) {
+// Reads a regular file of at most kMaxFileBytes (and at most `budget` bytes, which it spends);
+// returns the reason it cannot, or "".
+std::string read_file(const std::filesystem::path& p, std::string& out, std::uintmax_t& budget) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(p, ec)) return "cannot read " + p.string() + ": not a regular file";
+    const std::uintmax_t size = std::filesystem::file_size(p, ec);
+    if (ec || size > kMaxFileBytes) return p.string() + ": larger than the 256 MiB a certificate file may have";
+    if (size > budget) return p.string() + ": the manifest's files exceed 1 GiB in all";
     std::ifstream in(p, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    out = ss.str();
-    return true;
+    out.assign(size, '\0');
+    if (!in.read(out.data(), static_cast<std::streamsize>(size)) || in.peek() != EOF) return "cannot read " + p.string() + " (changed while read?)";
+    budget -= size;
+    return "";
 }
 
-}  // namespace
+// One manifest: every listed file hashed, counted and checked; the pinned total and covers.
+std::size_t check_manifest(const std::filesystem::path& manifest, const std::string& text, Totals& t, std::uintmax_t& budget, bool& coverage) {
+    auto L = tokenize(text);
+    i64 total = -1, covers = -1;
+    std::size_t listed = 0, files = 0, problems = 0;
+    auto bad = [&](int line, const std::string& why) { std::cout << "REJECTED " << manifest.string() << ":" << line << ": " << why << '\n'; ++problems; };
+    if (L.empty() || L[0].tok != std::vector<std::string>{"dualhex-manifest", "1"}) { bad(1, "expected 'dualhex-manifest 1'"); L.clear(); }
+    for (std::size_t i = 1; i < L.size(); ++i) {
+        const Line& l = L[i];
+        try {
+            if ((l.tok[0] == "total" || l.tok[0] == "covers") && l.tok.size() == 2) {
+                i64& slot = l.tok[0] == "total" ? total : covers;
+                const i64 v = to_int(l.tok[1], l.number);
+                if (slot >= 0 || v < 0 || v > (i64{1} << 40)) reject(l.tok[0] + " given twice, negative or absurd");
+                slot = v;
+                continue;
+            }
+            // file NAME COUNT KIND fnv1a64 HEX
+            if (l.tok[0] != "file" || l.tok.size() != 6 || l.tok[4] != "fnv1a64") reject("expected 'total N', 'covers N' (once each) or 'file NAME COUNT KIND fnv1a64 HEX'");
+        } catch (const Reject& r) { bad(l.number, r.why); continue; }
+        ++files;
+        const std::filesystem::path p = manifest.parent_path() / l.tok[1];
+        std::string body;
+        if (std::string why = read_file(p, body, budget); !why.empty()) { bad(l.number, why); continue; }
+        char hex[17];
+        std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(body)));
+        if (l.tok[5] != hex) { bad(l.number, p.string() + ": FNV-1a 64 hash is " + hex + ", the manifest says " + l.tok[5]); continue; }
+        std::set<std::string> kinds;
+        std::size_t before = t.rejected, n = check_file(p.string(), body, t, kinds);
+        listed += n;
+        std::cout << l.tok[1] << ": " << n << " certificates, hash ok, " << (n - (t.rejected - before)) << " verified\n";
+        if (std::to_string(n) != l.tok[2]) bad(l.number, p.string() + " holds " + std::to_string(n) + " certificates, the manifest says " + l.tok[2]);
+        if (kinds.size() > 1 || (kinds.size() == 1 && *kinds.begin() != l.tok[3])) bad(l.number, p.string() + ": certificates of another kind than " + l.tok[3]);
+    }
+    if (total < 0 || static_cast<std::size_t>(total) != listed || files == 0)
+        bad(0, "the pinned total " + std::to_string(total) + " differs from the " + std::to_string(listed) + " certificates in the files");
+    bool all = covers >= 0 && t.covered.size() == static_cast<std::size_t>(covers);
+    for (i64 x = 0; all && x < covers; ++x) all = t.covered.count(x) > 0;
+    if (covers >= 0 && !all) bad(0, "the certificates cover " + std::to_string(t.covered.size()) + " labels, not exactly 0.." + std::to_string(covers - 1));
+    if (covers < 0 && !t.covered.empty()) bad(0, "certificates carry covers lines but the manifest pins no 'covers N'");
+    coverage = covers >= 0;
+    return problems;
+}
 
-int main(int argc, char** argv) {
-    const std::vector<std::string> args(argv + 1, argv + argc);
+// The whole run on argv-style arguments; prints the verdict, returns the exit code.
+int run(const std::vector<std::string>& args) {
     if (args.empty() || args.size() > 2 || (args.size() == 2 && args[0] != "--file") || args[0] == "--help") {
         std::cerr << "usage: dualhex-proof-checker MANIFEST | --file CERTIFICATE_FILE\n";
         return 2;
     }
     Totals t;
     std::size_t problems = 0;
+    std::uintmax_t budget = kMaxManifestBytes;
+    bool coverage = false;  // checked against a manifest's covers line
+    std::string text;
+    const std::string& path = args.back();
+    if (std::string why = read_file(path, text, budget); !why.empty()) { std::cout << "REJECTED: " << why << '\n'; return 1; }
     if (args.size() == 2) {
-        std::string text;
-        if (!read_file(args[1], text)) { std::cout << "REJECTED: cannot read " << args[1] << '\n'; return 1; }
         std::set<std::string> kinds;
-        const std::size_t n = check_file(args[1], text, t, kinds);
-        std::cout << args[1] << ": " << n << " certificates\n";
+        const std::size_t n = check_file(path, text, t, kinds);
+        std::cout << path << ": " << n << " certificates (covers lines are checked only with a manifest)\n";
     } else {
-        const std::filesystem::path manifest = args[0];
-        std::string text;
-        if (!read_file(manifest, text)) { std::cout << "REJECTED: cannot read manifest " << manifest << '\n'; return 1; }
-        auto L = tokenize(text);
-        i64 total = -1, covers = -1;
-        std::size_t listed = 0, files = 0;
-        auto bad = [&](int line, const std::string& why) { std::cout << "REJECTED " << manifest.string() << ":" << line << ": " << why << '\n'; ++problems; };
-        if (L.empty() || L[0].tok != std::vector<std::string>{"dualhex-manifest", "1"}) { bad(1, "expected 'dualhex-manifest 1'"); L.clear(); }
-        for (std::size_t i = 1; i < L.size(); ++i) {
-            const Line& l = L[i];
-            try {
-                if (l.tok[0] == "total" && l.tok.size() == 2 && total < 0) { total = to_int(l.tok[1], l.number); continue; }
-                if (l.tok[0] == "covers" && l.tok.size() == 2 && covers < 0) { covers = to_int(l.tok[1], l.number); continue; }
-                // file NAME COUNT KIND fnv1a64 HEX
-                if (l.tok[0] != "file" || l.tok.size() != 6 || l.tok[4] != "fnv1a64") { bad(l.number, "expected 'total N' once or 'file NAME COUNT KIND fnv1a64 HEX'"); continue; }
-            } catch (const Reject& r) { bad(l.number, r.why); continue; }
-            ++files;
-            const std::filesystem::path p = manifest.parent_path() / l.tok[1];
-            std::string body;
-            if (!read_file(p, body)) { bad(l.number, "cannot read " + p.string()); continue; }
-            char hex[17];
-            std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(body)));
-            if (l.tok[5] != hex) { bad(l.number, p.string() + ": FNV-1a 64 hash is " + hex + ", the manifest says " + l.tok[5]); continue; }
-            std::set<std::string> kinds;
-            std::size_t before = t.rejected, n = check_file(p, body, t, kinds);
-            listed += n;
-            std::cout << l.tok[1] << ": " << n << " certificates, hash ok, " << (n - (t.rejected - before)) << " verified\n";
-            if (std::to_string(n) != l.tok[2]) bad(l.number, p.string() + " holds " + std::to_string(n) + " certificates, the manifest says " + l.tok[2]);
-            if (kinds.size() > 1 || (kinds.size() == 1 && *kinds.begin() != l.tok[3])) bad(l.number, p.string() + ": certificates of another kind than " + l.tok[3]);
-        }
-        if (total < 0 || static_cast<std::size_t>(total) != listed || files == 0)
-            bad(0, "the pinned total " + std::to_string(total) + " differs from the " + std::to_string(listed) + " certificates in the files");
-        bool all = covers >= 0 && t.covered.size() == static_cast<std::size_t>(covers);
-        for (i64 x = 0; all && x < covers; ++x) all = t.covered.count(x) > 0;
-        if (covers >= 0 && !all) bad(0, "the certificates cover " + std::to_string(t.covered.size()) + " labels, not exactly 0.." + std::to_string(covers - 1));
+        problems = check_manifest(path, text, t, budget, coverage);
     }
     std::cout << "parsed: " << t.certificates << " certificates, " << with_commas(t.sum.vertices) << " vertices, " << with_commas(t.sum.edges)
               << " edges, " << with_commas(t.sum.faces) << " faces, " << with_commas(t.sum.cells) << " cells\n";
@@ -613,8 +775,28 @@ int main(int argc, char** argv) {
     }
     std::cout << "VERIFIED:";
     for (const auto& [kind, n] : t.kinds) std::cout << ' ' << n << ' ' << kind << " certificates,";
-    if (!t.covered.empty()) std::cout << " covering " << t.covered.size() << " labels (0.." << t.covered.rbegin()->first << "),";
+    if (coverage) std::cout << " covering " << t.covered.size() << " labels (0.." << t.covered.size() - 1 << "),";
     std::cout << ' ' << with_commas(t.sum.interior_vertices) << " interior vertices (" << with_commas(t.sum.cubes) << " cube dual cells), "
-              << with_commas(t.sum.interior_edges) << " interior edges checked\n";
+              << with_commas(t.sum.interior_edges) << " interior edges checked, " << with_commas(t.sum.wound_edges) << " edges locally injective\n";
     return 0;
 }
+
+}  // namespace
+
+#ifdef DUALHEX_CHECKER_FUZZ
+// The fuzz entry point (proofs/fuzz/): checks `size` bytes as a certificate file, then as a
+// manifest (whose files do not exist), with output discarded.
+extern "C" int dualhex_checker_fuzz_one(const char* data, std::size_t size) {
+    std::cout.setstate(std::ios::badbit);  // the verdicts are not the point here: no output
+    const std::string text(data, size);
+    Totals t;
+    std::set<std::string> kinds;
+    check_file("fuzz", text, t, kinds);
+    std::uintmax_t budget = 0;
+    bool coverage = false;
+    Totals m;
+    return static_cast<int>(check_manifest("/nonexistent-dualhex-fuzz/manifest", text, m, budget, coverage) + t.rejected);
+}
+#else
+int main(int argc, char** argv) { return run(std::vector<std::string>(argv + 1, argv + argc)); }
+#endif

@@ -1,0 +1,269 @@
+// The independent proof checker against hostile inputs (issue 15): folded complexes whose
+// cell volumes are all positive and sum to the domain's, coordinates near the int64 limits,
+// inputs that used to loop forever or exhaust memory, and manifests that switch checks off.
+// Every input here is false (or unreadable); the checker must say REJECTED with a located
+// reason, exit 1 and never print VERIFIED. Needs only the checker binary and the shipped
+// certificates.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kShipped = fs::path(DUALHEX_SOURCE_DIR) / "proofs" / "certificates";
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+struct CheckerRun {
+    int code = -1;
+    std::string out;
+};
+CheckerRun run_checker(const std::string& args) {
+    CheckerRun r;
+    FILE* p = ::popen(("timeout 60 " + std::string(DUALHEX_PROOF_CHECKER) + " " + args + " 2>&1").c_str(), "r");
+    char buf[4096];
+    while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
+    const int status = ::pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+class Hostile : public ::testing::Test {
+protected:
+    fs::path dir = fs::temp_directory_path() / ("dualhex-hostile-" + std::to_string(::getpid()));
+    void SetUp() override { fs::create_directories(dir); }
+    void TearDown() override { fs::remove_all(dir); }
+    fs::path put(const std::string& name, const std::string& text) {
+        std::ofstream(dir / name, std::ios::binary) << text;
+        return dir / name;
+    }
+    // Checks `text` as one certificate file: rejected, for the reason `why`.
+    void expect_rejected(const std::string& text, const std::string& why, const std::string& what) {
+        expect_rejected_run(run_checker("--file " + put("hostile.cert", text).string()), why, what);
+    }
+    static void expect_rejected_run(const CheckerRun& r, const std::string& why, const std::string& what) {
+        EXPECT_EQ(r.code, 1) << what << "\n" << r.out;
+        EXPECT_EQ(r.out.find("VERIFIED"), std::string::npos) << what << "\n" << r.out;
+        EXPECT_NE(r.out.find("REJECTED"), std::string::npos) << what << "\n" << r.out;
+        EXPECT_NE(r.out.find(why), std::string::npos) << what << ": expected the reason '" << why << "'\n" << r.out;
+    }
+};
+
+// A unit cube [x0, x0 + s]^3 as an element certificate (true for every x0, s in range).
+std::string cube(long long x0, long long s, const std::string& domain = "") {
+    std::ostringstream o;
+    o << "dualhex-certificate 1\nname cube\nkind element\n";
+    o << (domain.empty() ? "domain box " + std::to_string(x0) + " " + std::to_string(x0) + " " + std::to_string(x0) + " " +
+                               std::to_string(x0 + s) + " " + std::to_string(x0 + s) + " " + std::to_string(x0 + s)
+                         : domain)
+      << "\nvertices 8\n";
+    for (int v = 0; v < 8; ++v) o << x0 + s * (v & 1) << ' ' << x0 + s * (v >> 1 & 1) << ' ' << x0 + s * (v >> 2 & 1) << '\n';
+    o << "faces 6\n0 2 3 1\n4 5 7 6\n0 1 5 4\n2 6 7 3\n0 4 6 2\n1 3 7 5\ncells 1\n+0 +1 +2 +3 +4 +5\n";
+    o << "interior 0\nclaim subdivision\nend\n";
+    return o.str();
+}
+
+TEST_F(Hostile, TheCubeFixtureVerifiesEvenAtTheCoordinateBound) {
+    for (auto [x0, s] : {std::array<long long, 2>{0, 1}, {-(1 << 19), 1 << 20}, {(1 << 19) - 1, 1}}) {
+        const CheckerRun r = run_checker("--file " + put("cube.cert", cube(x0, s)).string());
+        EXPECT_EQ(r.code, 0) << x0 << " " << s << "\n" << r.out;
+        EXPECT_NE(r.out.find("VERIFIED"), std::string::npos) << r.out;
+    }
+}
+
+// --------------------------------------------------------------- folds
+// The first shipped strong torus (mask 0): 4x4x4 hexes of 12 units, period 48. Every
+// vertex's star is the cube of side 24 around it, so moving a vertex to a lattice point
+// outside that cube (one coordinate off by 12 or more, modulo the period) cannot leave a
+// subdivision: the truth of every such mutation is known exactly.
+struct Torus {
+    std::vector<std::string> lines;
+    std::size_t first_vertex = 0, vertices = 0;
+    std::set<std::array<long long, 3>> taken;
+};
+Torus mask0_torus() {
+    const std::string text = read(kShipped / "configurations-000-021.cert");
+    Torus t;
+    std::istringstream in(text.substr(0, text.find("\nend\n") + 5));
+    for (std::string l; std::getline(in, l);) t.lines.push_back(l);
+    for (std::size_t i = 0; i < t.lines.size(); ++i)
+        if (t.lines[i].rfind("vertices ", 0) == 0) t.first_vertex = i + 1, t.vertices = std::stoul(t.lines[i].substr(9));
+    for (std::size_t v = 0; v < t.vertices; ++v) {
+        std::array<long long, 3> p{};
+        std::istringstream(t.lines[t.first_vertex + v]) >> p[0] >> p[1] >> p[2];
+        t.taken.insert(p);
+    }
+    return t;
+}
+std::string join(const std::vector<std::string>& lines) {
+    std::string s;
+    for (const std::string& l : lines) s += l + '\n';
+    return s;
+}
+
+TEST_F(Hostile, AVertexMovedOutOfItsStarIsRejected) {
+    const Torus t = mask0_torus();
+    ASSERT_EQ(t.vertices, 64u);
+    ASSERT_EQ(run_checker("--file " + put("t.cert", join(t.lines)).string()).code, 0);
+    // (A negative volume or a cell spanning half the period catches these; the folds that
+    // keep every volume positive are below.)
+    std::string all;
+    std::size_t tried = 0;
+    for (std::size_t v = 0; v < t.vertices; v += 3) {
+        std::array<long long, 3> p{};
+        std::istringstream(t.lines[t.first_vertex + v]) >> p[0] >> p[1] >> p[2];
+        for (std::array<long long, 3> d : {std::array<long long, 3>{15, 0, 0}, {0, -15, 3}, {3, 3, 21}, {-21, 9, -9}, {13, 13, 13}}) {
+            std::array<long long, 3> q{};
+            for (int a = 0; a < 3; ++a) q[a] = ((p[a] + d[a]) % 48 + 48) % 48;
+            if (t.taken.count(q)) continue;
+            std::vector<std::string> m = t.lines;
+            m[t.first_vertex + v] = std::to_string(q[0]) + " " + std::to_string(q[1]) + " " + std::to_string(q[2]);
+            for (std::string& l : m)
+                if (l.rfind("name ", 0) == 0) l = "name moved-" + std::to_string(++tried);
+            all += join(m);
+        }
+    }
+    ASSERT_GT(tried, 50u);
+    const CheckerRun r = run_checker("--file " + put("moved.cert", all).string());
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(r.out.find("VERIFIED"), std::string::npos);
+    std::size_t rejected = 0;
+    for (std::size_t at = 0; (at = r.out.find("REJECTED", at)) != std::string::npos; ++at) ++rejected;
+    EXPECT_EQ(rejected, tried) << r.out;  // every moved-out vertex is a fold, and every fold is caught
+    std::cout << "[ folds ] " << tried << " vertices moved out of their stars, " << rejected << " rejected\n";
+}
+
+TEST_F(Hostile, FoldsThatKeepEveryVolumePositiveAreRejected) {
+    // The attack of issue 15: one vertex line of the shipped mask-0 torus changed to another
+    // lattice point inside the vertex's star. All 64 cell volumes stay positive and sum to
+    // 48^3, and the old checker printed VERIFIED; yet the fan faces fold: at the witness
+    // point (found by exact ray casting with rationals, proofs/fuzz/fold_oracle.py) the
+    // cells' winding numbers are 1, -1 and 1, so two cells overlap there.
+    struct Fold {
+        const char *from, *to, *witness;
+    };
+    for (const Fold& f : {Fold{"12 0 12", "15 39 3", "13.125 -4.083 1.380: cells 0, 18, 19 wind 1, -1, 1"},
+                          Fold{"36 0 36", "42 9 27", "43.27 6.995 30.925: cells 41, 45, 63 wind 1, -1, 1"},
+                          Fold{"0 12 36", "9 3 30", "7.025 2.509 31.86: cells 32, 36, 45 wind 1, -1, 1"},
+                          Fold{"0 0 36", "39 39 42", "-2.406 -10.999 37.847: cells 50, 54, 63 wind 1, -1, 1"}}) {
+        Torus t = mask0_torus();
+        std::size_t v = 0;
+        while (v < t.vertices && t.lines[t.first_vertex + v] != f.from) ++v;
+        ASSERT_LT(v, t.vertices) << f.from;
+        t.lines[t.first_vertex + v] = f.to;
+        expect_rejected(join(t.lines), "not exactly once (overlap or fold)", std::string(f.from) + " -> " + f.to + ", witness " + f.witness);
+    }
+}
+
+// --------------------------------------------------------------- overflow
+TEST_F(Hostile, CoordinatesBeyondTheBoundAreRejectedBeforeUse) {
+    expect_rejected(cube(-(1LL << 19) - 1, 1), "outside [-2^19, 2^19]", "box below the bound");
+    expect_rejected(cube((1LL << 19), 1), "outside [-2^19, 2^19]", "box above the bound");
+    expect_rejected(cube(0, 1, "domain box -9223372036854775808 0 0 0 1 1"), "outside [-2^19, 2^19]", "int64 minimum");
+    expect_rejected(cube(0, 1, "domain box 0 0 0 9223372036854775807 1 1"), "outside [-2^19, 2^19]", "int64 maximum");
+    expect_rejected(cube(0, 1, "domain box 0 0 0 99999999999999999999 1 1"), "not an integer", "beyond int64");
+    std::string far = cube(0, 1);
+    expect_rejected(far.replace(far.find("\n1 1 1\n"), 7, "\n1 1 -4611686018427387904\n"), "outside [-2^19, 2^19]", "vertex");
+    std::string torus = join(mask0_torus().lines);
+    expect_rejected(torus.replace(torus.find("domain torus 48"), 15, "domain torus 4611686018427387904"), "outside [-2^19, 2^19]", "period");
+}
+
+// --------------------------------------------------------------- termination, resources
+TEST_F(Hostile, ABadVersionLineEndsWithOneRejection) {
+    const std::string text = "dualhex-certificate 2\n";  // 22 bytes: the resync loop used not to advance
+    ASSERT_EQ(text.size(), 22u);
+    expect_rejected(text, "line 1: expected 'dualhex-certificate 1'", "bad version");
+    const CheckerRun r = run_checker("--file " + put("v.cert", text + text + "end\n" + cube(0, 1)).string());
+    EXPECT_EQ(r.code, 1);
+    EXPECT_LT(r.out.size(), 1000u) << r.out;  // a few rejections, not an endless stream
+}
+
+TEST_F(Hostile, NonRegularAndHugeFilesAreRefusedUnread) {
+    expect_rejected_run(run_checker("--file /dev/zero"), "not a regular file", "/dev/zero");
+    expect_rejected_run(run_checker("/dev/zero"), "not a regular file", "/dev/zero as manifest");
+    expect_rejected_run(run_checker("--file " + dir.string()), "not a regular file", "a directory");
+    const fs::path huge = dir / "huge.cert";  // sparse: costs no disk
+    std::ofstream(huge).put('\n');
+    fs::resize_file(huge, (std::uintmax_t{256} << 20) + 1);
+    expect_rejected_run(run_checker("--file " + huge.string()), "larger than the 256 MiB", "257 MiB");
+    put("manifest", "dualhex-manifest 1\ntotal 1\nfile huge.cert 1 element fnv1a64 0000000000000000\n");
+    expect_rejected_run(run_checker((dir / "manifest").string()), "larger than the 256 MiB", "huge file in a manifest");
+}
+
+TEST_F(Hostile, MalformedCountsAreRejectedBeforeAllocating) {
+    std::string c = cube(0, 1);
+    for (const char* bad : {"vertices -1", "vertices 99999999999", "vertices 9", "vertices 18446744073709551615"}) {
+        std::string m = c;
+        expect_rejected(m.replace(m.find("vertices 8"), 10, bad), "", bad);
+    }
+    std::string m = c;
+    expect_rejected(m.replace(m.find("interior 0"), 10, "interior 4000000000"), "bad count", "interior count");
+    m = c;
+    expect_rejected(m.replace(m.find("faces 6"), 7, "faces 100000000"), "bad count", "faces count");
+    m = c;
+    std::string big = "0";
+    for (int i = 0; i < 70; ++i) big += " 1";
+    expect_rejected(m.replace(m.find("\n0 2 3 1\n"), 9, "\n" + big + "\n"), "more than 64 vertices", "a face of 71 vertices");
+}
+
+TEST_F(Hostile, ManifestCountsCannotSwitchChecksOff) {
+    // the 12 shipped tori of masks 0..21 cover 22 of the 256 masks: a manifest claiming
+    // `covers 256` is false, and so is one that claims nothing while they carry covers lines
+    const std::string name = "configurations-000-021.cert";
+    fs::copy(kShipped / name, dir / name);
+    const std::string shipped = read(kShipped / "manifest");
+    const auto at = shipped.find("file " + name);
+    const std::string file_line = shipped.substr(at, shipped.find('\n', at) + 1 - at);
+    for (const char* covers : {"covers 256\n", "covers -1\n", "covers -256\n", "covers 22\ncovers -1\n", "covers 1099511627777\n", ""}) {
+        put("manifest", std::string("dualhex-manifest 1\ntotal 12\n") + covers + file_line);
+        const CheckerRun r = run_checker((dir / "manifest").string());
+        EXPECT_EQ(r.code, 1) << covers << r.out;
+        EXPECT_EQ(r.out.find("VERIFIED"), std::string::npos) << covers << r.out;
+        EXPECT_NE(r.out.find("REJECTED " + (dir / "manifest").string()), std::string::npos) << covers << r.out;
+    }
+    put("manifest", "dualhex-manifest 1\ntotal -1\ncovers 256\n" + file_line);
+    expect_rejected_run(run_checker((dir / "manifest").string()), "negative or absurd", "total -1");
+}
+
+TEST_F(Hostile, CoverageIsClaimedOnlyWhenChecked) {
+    // a file checked alone: its covers lines are not a coverage proof and VERIFIED says so
+    const CheckerRun r = run_checker("--file " + (kShipped / "configurations-000-021.cert").string());
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(r.out.find("covering"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("covers lines are checked only with a manifest"), std::string::npos) << r.out;
+}
+
+TEST_F(Hostile, ATorusCellSpanningHalfThePeriodIsRejected) {
+    // the mask-0 torus with its x planes 0, 12, 24, 36 moved to 0, 1, 2, X: for X = 25 a valid
+    // irregular torus; for X = 26 the cells between x = 2 and 26 span half the period 48, so
+    // which copy of a vertex a face means is ambiguous: rejected
+    for (const char* x36 : {"25", "26"}) {
+        Torus t = mask0_torus();
+        for (std::size_t v = 0; v < t.vertices; ++v) {
+            std::string& l = t.lines[t.first_vertex + v];
+            const std::string x = l.substr(0, l.find(' '));
+            l = (x == "12" ? "1" : x == "24" ? "2" : x == "36" ? x36 : x) + l.substr(l.find(' '));
+        }
+        const CheckerRun r = run_checker("--file " + put("t.cert", join(t.lines)).string());
+        if (std::string(x36) == "25") EXPECT_EQ(r.code, 0) << r.out;
+        else expect_rejected_run(r, "spans half the torus period", "x planes 0 1 2 26");
+    }
+}
+
+}  // namespace
