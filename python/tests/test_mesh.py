@@ -104,3 +104,23 @@ def test_bad_options(kwargs, error, text):
     with pytest.raises(error) as e:
         dualhex.mesh(**kwargs)
     assert text in str(e.value)
+
+
+def test_the_command_line_reports_warnings_in_json_and_on_stderr(shared_data, tmp_path):
+    """`dualhex mesh --json` without a terminal: the warning is in the JSON and on stderr once."""
+    import json
+    import os
+    import subprocess
+    exe = os.environ.get("DUALHEX_EXE")
+    if not exe:
+        pytest.skip("DUALHEX_EXE not set")
+    v, f = read_off(shared_data / "surfaces" / "cgal_cube.off")
+    inward = tmp_path / "inward.off"
+    lines = ["OFF", f"{len(v)} {len(f)} 0"] + [" ".join(map(repr, p)) for p in v.tolist()]
+    inward.write_text("\n".join(lines + [f"3 {a} {b} {c}" for a, b, c in f[:, ::-1].tolist()]) + "\n")
+    out = subprocess.run([exe, "mesh", str(inward), "-o", str(tmp_path / "m.vtk"), "--json"],
+                         capture_output=True, text=True, check=True)
+    warnings = json.loads(out.stdout)["warnings"]
+    assert warnings == [f"{inward}: triangles were oriented inward; flipped"]
+    assert out.stderr.count("oriented inward") == 1 and out.stderr.count(str(inward)) == 1
+    assert f"warning: {warnings[0]}" in out.stderr
