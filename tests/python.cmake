@@ -3,7 +3,7 @@
 # build tree's package (PYTHONPATH=<build>/python). Not registered when the module is not
 # built (DUALHEX_BUILD_PYTHON OFF, the default in a DUALHEX_SANITIZE build: an
 # uninstrumented python cannot load an ASan-instrumented extension without LD_PRELOAD).
-if(TARGET dualhex_python)
+if(TARGET dualhex_python AND NOT DUALHEX_SANITIZE)
   file(GLOB dualhex_pytest_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/python/tests/test_*.py)
   foreach(file IN LISTS dualhex_pytest_files)
     get_filename_component(stem ${file} NAME_WE)
@@ -17,7 +17,7 @@ if(TARGET dualhex_python)
 endif()
 
 # The installed package, moved away from its prefix, imported from outside the trees.
-if(TARGET dualhex_python)
+if(TARGET dualhex_python AND NOT DUALHEX_SANITIZE)
   add_test(NAME python_installed_module
            COMMAND ${CMAKE_COMMAND} -DDUALHEX_BUILD_DIR=${PROJECT_BINARY_DIR}
                    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/python-installed-work
