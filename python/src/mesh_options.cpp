@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <stdexcept>
+#include <type_traits>
 
 namespace dualhex::python {
 namespace {
@@ -14,9 +15,10 @@ struct OptionBinding {
     std::function<py::object(const Options&)> get;
 };
 
-// A plain field: the Python value must convert to its type (bool is not taken for a number).
-template <class T>
-OptionBinding field(std::string name, T Options::*member) {
+// A plain field of Options or of a base of it (bool is not taken for a number).
+template <class T, class Owner>
+OptionBinding field(std::string name, T Owner::*member) {
+    static_assert(std::is_base_of_v<Owner, Options>);
     return {name,
             [name, member](Options& o, const py::handle& v) {
                 if constexpr (!std::is_same_v<T, bool>)

@@ -54,7 +54,8 @@ def test_an_inward_surface_is_flipped_with_a_warning(shared_data):
 def test_options_map_onto_the_pipeline():
     assert dualhex.mesh_option_names()[:2] == ["balance", "max_depth"]
     defaults = dualhex.mesh_defaults()
-    assert defaults["balance"] == "weak" and defaults["max_depth"] == 6
+    assert list(defaults) == dualhex.mesh_option_names() and defaults["balance"] == "weak"
+    assert dualhex.mesh(max_depth=3).report["options"] == dict(defaults, max_depth=3)
     m = dualhex.mesh(max_depth=3, smooth_iterations=0, balance="strong")
     assert m.report["options"]["smooth_iterations"] == 0 and m.report["smooth_iterations"] == 0
     assert m.report["options"]["balance"] == "strong"
