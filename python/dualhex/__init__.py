@@ -11,12 +11,12 @@ dualhex.InstallError (a grid that is not paired / balanced as required), ValueEr
 a bad option value, TypeError for an unknown option, dualhex.VerificationError for a
 result that fails its own verification (a bug).
 """
-from ._dualhex import (InputError, InstallError, VerificationError, classify, list_checks,
-                       mesh_defaults, mesh_option_names, verify)
+from ._dualhex import (InputError, InstallError, VerificationError, classify, elements_directory,
+                       list_checks, mesh_defaults, mesh_option_names, verify)
 from . import _dualhex
 
 __all__ = ["Mesh", "install", "mesh", "verify", "list_checks", "classify", "mesh_option_names",
-           "mesh_defaults", "InputError", "InstallError", "VerificationError"]
+           "mesh_defaults", "elements_directory", "InputError", "InstallError", "VerificationError"]
 
 
 class Mesh:

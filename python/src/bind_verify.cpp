@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "classification.hpp"
+#include "dualhex/schemes/element_library.hpp"
 #include "convert.hpp"
 #include "verify_checks.hpp"
 
@@ -143,6 +144,14 @@ void bind_verify(py::module_& m) {
           "as a dict: ok, passed, failed, skipped, seconds, checks [{name, description, status, ok, summary, "
           "seconds, details, report}].");
     m.def("list_checks", &list_checks, "The registered checks: [{name, description}].");
+    m.def(
+        "elements_directory",
+        []() -> py::object {
+            const auto dir = find_elements_directory();
+            return dir.empty() ? py::object(py::none()) : py::object(py::str(dir.string()));
+        },
+        "The element files on disk (DUALHEX_ELEMENTS, the installed share/dualhex/elements, or the source "
+        "tree), None if none is found; install() and mesh() use the copy compiled into the module.");
     m.def("classify", &classify_py,
           "The 256 configurations around an application point classified under the 48 cube symmetries and the 24 "
           "rotations (as `dualhex classify --json`).");

@@ -25,8 +25,11 @@ where = os.path.realpath(dualhex.__file__)
 assert where.startswith(os.path.realpath(os.environ["PYTHONPATH"])), where
 m = dualhex.install([[1, i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)])
 assert m.report["ok"] and len(m.hexes) == 27, m.report
-r = dualhex.verify(only=["schemes.strong-elements", "schemes.weak-elements"])
-assert r["ok"] and r["passed"] == 2, [(c["name"], c["summary"]) for c in r["checks"]]
+# The element files on disk (which the crossing-variant check copies) are found beside the module.
+moved = os.path.realpath(os.path.join(os.environ["PYTHONPATH"], "..", "..", ".."))
+assert dualhex.elements_directory() == os.path.join(moved, "share", "dualhex", "elements"), dualhex.elements_directory()
+r = dualhex.verify(only=["schemes.strong-elements", "schemes.weak-elements", "schemes.crossing-variants"])
+assert r["ok"] and r["passed"] == 3, [(c["name"], c["summary"]) for c in r["checks"]]
 print("installed module OK:", where)
 ]=] WORKING_DIRECTORY "${WORK_DIR}/run" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)

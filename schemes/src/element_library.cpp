@@ -1,5 +1,7 @@
 #include "dualhex/schemes/element_library.hpp"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <sstream>
@@ -41,6 +43,25 @@ Element load_element(const fs::path& file) { return make_element(file, read_elem
 
 fs::path source_elements_directory() { return fs::path(DUALHEX_ELEMENTS_SOURCE_DIR); }
 
+namespace {
+// The binary holding this code may be a shared module (the Python extension, installed at
+// <prefix>/lib/python3.X/.../dualhex/): the nearest of its ancestors with the installed
+// element directory.
+fs::path installed_beside_this_code() {
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void*>(&default_elements_directory), &info) == 0 || !info.dli_fname) return {};
+    std::error_code ec;
+    fs::path dir = fs::weakly_canonical(fs::path(info.dli_fname), ec).parent_path();
+    if (ec) return {};
+    for (int up = 0; up < 6 && !dir.empty(); ++up, dir = dir.parent_path()) {
+        const fs::path candidate = dir / DUALHEX_INSTALL_DATADIR / "dualhex" / "elements";
+        if (fs::is_directory(candidate, ec)) return candidate;  // (ec: missing, keep looking)
+        if (dir == dir.root_path()) break;
+    }
+    return {};
+}
+}  // namespace
+
 fs::path find_elements_directory() {
     try {
         return default_elements_directory();
@@ -62,6 +83,7 @@ fs::path default_elements_directory() {
         const fs::path installed = exe.parent_path() / ".." / DUALHEX_INSTALL_DATADIR / "dualhex" / "elements";
         if (fs::is_directory(installed, ec)) return installed.lexically_normal();
     }
+    if (const fs::path beside = installed_beside_this_code(); !beside.empty()) return beside;
     const fs::path src = source_elements_directory();
     if (!src.empty() && fs::is_directory(src, ec)) return src;
     throw SchemeFormatError("", 0,

@@ -11,7 +11,9 @@
 //   1. the environment variable DUALHEX_ELEMENTS (a directory), if set and non-empty;
 //   2. <directory of the running executable>/../share/dualhex/elements (an installed
 //      tree: `install(DIRECTORY ...)` puts them in ${CMAKE_INSTALL_DATADIR}/dualhex/elements);
-//   3. the source tree's schemes/elements (compile-time path, for the build tree).
+//   3. <an ancestor of the binary holding this code>/share/dualhex/elements (up to 6 levels
+//      up: a shared module such as the installed Python extension);
+//   4. the source tree's schemes/elements (compile-time path, for the build tree).
 #include <filesystem>
 #include <optional>
 #include <string>
