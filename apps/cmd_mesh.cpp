@@ -47,8 +47,8 @@ void run_mesh(const MeshOptionsCli& opt) {
         std::cerr << "error: " << e.what() << '\n';
         throw Exit{kInputError};
     }
-    if (progress)
-        for (const auto& w : report.warnings) std::cerr << "warning: " << input_name << ": " << w << '\n';
+    // Always on stderr (also under --json and without a terminal); each names its file.
+    for (const auto& w : report.warnings) std::cerr << "warning: " << w << '\n';
     const std::size_t triangles = surface.triangles.size();
     const geometry::AabbTree tree(std::move(surface));
 
@@ -89,6 +89,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"thickness_levels", size.thickness_levels},
                       {"surface_band", size.surface_band}}},
                     {"triangles", triangles},
+                    {"warnings", report.warnings},
                     {"leaves", r.leaves},
                     {"cells", r.cells},
                     {"dual_hexes", r.dual_hexes},

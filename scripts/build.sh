@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Usage: scripts/build.sh [BUILD_DIR] [extra cmake -D options...]
-# Configures (Release by default) and builds dualhex with 2 parallel jobs.
+# Configures (Release by default) and builds dualhex with 2 parallel jobs: every target,
+# or only those named in DUALHEX_TARGETS (space-separated, e.g. "dualhex").
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$root/build}"
 shift || true
 jobs="${DUALHEX_JOBS:-2}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE="${CMAKE_BUILD_TYPE:-Release}" "$@"
-cmake --build "$build" -j"$jobs"
+targets=()
+for t in ${DUALHEX_TARGETS:-}; do targets+=(--target "$t"); done
+cmake --build "$build" -j"$jobs" "${targets[@]}"

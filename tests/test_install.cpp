@@ -11,6 +11,7 @@
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/grid/predicates.hpp"
 #include "dualhex/grid/refinement.hpp"
+#include "dualhex/schemes/weak_rule.hpp"
 #include "dualhex/topology/dual.hpp"
 #include "dualhex/topology/histograms.hpp"
 #include "dualhex/topology/validation.hpp"
@@ -158,6 +159,17 @@ TEST(CheckersInstall, RefusesUnpairedGridNamingLeaves) {
     }
 }
 
+TEST(CheckersInstall, DefaultOptionsAcceptAWeaklyBalancedGrid) {
+    // The default balance is weak, as `dualhex install`'s: the weak rule installs a weak grid.
+    const std::filesystem::path file = std::filesystem::path(DUALHEX_SHARED_DATA) / "grids" / "sphere_weak_d5.leaves";
+    if (!std::filesystem::exists(file)) GTEST_SKIP() << "shared data missing: " << file;
+    const LeafGrid grid = read_leaf_file(file);
+    ASSERT_FALSE(is_strongly_balanced(grid).ok);
+    EXPECT_EQ(InstallOptions{}.balance, Balance::Weak);
+    const InstallResult r = install(grid, WeakRule(), *load_default_element_library());
+    EXPECT_TRUE(verify_installation(r).ok()) << verify_installation(r).summary();
+}
+
 TEST(CheckersInstall, RefusesUnbalancedGridNamingLeaves) {
     // Level 2 everywhere; level-1 octant (0,0,0) to level 3; its level-2 cell (1,1,1) to
     // level 4: paired, but level 4 touches level 2 at x = 1/2.
@@ -168,8 +180,8 @@ TEST(CheckersInstall, RefusesUnbalancedGridNamingLeaves) {
     }));
     ASSERT_TRUE(is_paired(grid).ok) << is_paired(grid).message;
     ASSERT_FALSE(is_strongly_balanced(grid).ok);
-    try {
-        (void)install(grid, FlatOnlyRule(), flat_library());
+    try {  // the strong check asked for (the default is weak, as the CLI's)
+        (void)install(grid, FlatOnlyRule(), flat_library(), {.balance = Balance::Strong});
         FAIL() << "expected an InstallError";
     } catch (const InstallError& e) {
         const std::string what = e.what();

@@ -1,10 +1,13 @@
 #include "dualhex/schemes/element_library.hpp"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
+#include "dualhex/schemes/embedded_elements.hpp"
 #include "dualhex/topology/transform.hpp"
 
 #ifndef DUALHEX_ELEMENTS_SOURCE_DIR
@@ -24,17 +27,48 @@ std::vector<std::string> Element::cell_labels() const {
     return labels;
 }
 
-Element load_element(const fs::path& file) {
+namespace {
+Element make_element(fs::path file, ElementData data) {
     Element e;
-    e.file = file;
-    e.data = read_element_file(file);
+    e.file = std::move(file);
+    e.data = std::move(data);
     e.name = e.data.name;
     e.complex = to_complex(e.data);
     e.check = check_element(e.complex, ElementBox{{}, e.data.leaf}, e.cell_labels());
     return e;
 }
+}  // namespace
+
+Element load_element(const fs::path& file) { return make_element(file, read_element_file(file)); }
 
 fs::path source_elements_directory() { return fs::path(DUALHEX_ELEMENTS_SOURCE_DIR); }
+
+namespace {
+// The binary holding this code may be a shared module (the Python extension, installed at
+// <prefix>/lib/python3.X/.../dualhex/): the nearest of its ancestors with the installed
+// element directory.
+fs::path installed_beside_this_code() {
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void*>(&default_elements_directory), &info) == 0 || !info.dli_fname) return {};
+    std::error_code ec;
+    fs::path dir = fs::weakly_canonical(fs::path(info.dli_fname), ec).parent_path();
+    if (ec) return {};
+    for (int up = 0; up < 6 && !dir.empty(); ++up, dir = dir.parent_path()) {
+        const fs::path candidate = dir / DUALHEX_INSTALL_DATADIR / "dualhex" / "elements";
+        if (fs::is_directory(candidate, ec)) return candidate;  // (ec: missing, keep looking)
+        if (dir == dir.root_path()) break;
+    }
+    return {};
+}
+}  // namespace
+
+fs::path find_elements_directory() {
+    try {
+        return default_elements_directory();
+    } catch (const SchemeFormatError&) {
+        return {};
+    }
+}
 
 fs::path default_elements_directory() {
     std::error_code ec;
@@ -49,6 +83,7 @@ fs::path default_elements_directory() {
         const fs::path installed = exe.parent_path() / ".." / DUALHEX_INSTALL_DATADIR / "dualhex" / "elements";
         if (fs::is_directory(installed, ec)) return installed.lexically_normal();
     }
+    if (const fs::path beside = installed_beside_this_code(); !beside.empty()) return beside;
     const fs::path src = source_elements_directory();
     if (!src.empty() && fs::is_directory(src, ec)) return src;
     throw SchemeFormatError("", 0,
@@ -92,26 +127,46 @@ ElementBox placed_leaf_box(std::int64_t leaf, const CubeSymmetry& symmetry, cons
 ElementLibrary ElementLibrary::load(const fs::path& directory) {
     ElementLibrary lib;
     lib.directory_ = directory;
-    for (const auto& file : element_files(directory)) {
-        Element e = load_element(file);  // a malformed file throws its own file:line error
-        if (!e.valid()) {
-            std::ostringstream os;
-            os << "element '" << e.name << "' is invalid: ";
-            e.check.print(os, 10);
-            throw SchemeFormatError(file.string(), 0, os.str());
-        }
-        if (e.name != file.stem().string())
-            throw SchemeFormatError(file.string(), 0,
-                                    "element name '" + e.name + "' differs from the file name '" + file.stem().string() + "'");
-        if (lib.find(e.name)) throw SchemeFormatError(file.string(), 0, "duplicate element name '" + e.name + "'");
-        lib.elements_.push_back(std::move(e));
-    }
-    std::sort(lib.elements_.begin(), lib.elements_.end(),
-              [](const Element& a, const Element& b) { return a.name < b.name; });
+    for (const auto& file : element_files(directory))
+        lib.add_strict(load_element(file));  // a malformed file throws its own file:line error
+    lib.sort_by_name();
     return lib;
 }
 
-ElementLibrary ElementLibrary::load_default() { return load(default_elements_directory()); }
+ElementLibrary ElementLibrary::load_embedded() {
+    ElementLibrary lib;
+    lib.directory_ = find_elements_directory();
+    for (const auto& f : embedded_element_files()) {
+        const fs::path file = fs::path(kEmbeddedElementsDirectory) / f.file_name;
+        lib.add_strict(make_element(file, parse_element_string(f.text, file.string())));
+    }
+    lib.sort_by_name();
+    return lib;
+}
+
+ElementLibrary ElementLibrary::load_default() {
+    if (const char* env = std::getenv("DUALHEX_ELEMENTS"); env && *env) return load(default_elements_directory());
+    return load_embedded();
+}
+
+void ElementLibrary::sort_by_name() {
+    std::sort(elements_.begin(), elements_.end(), [](const Element& a, const Element& b) { return a.name < b.name; });
+}
+
+void ElementLibrary::add_strict(Element e) {
+    const std::string file = e.file.string();
+    if (!e.valid()) {
+        std::ostringstream os;
+        os << "element '" << e.name << "' is invalid: ";
+        e.check.print(os, 10);
+        throw SchemeFormatError(file, 0, os.str());
+    }
+    const std::string stem = e.file.stem().string();
+    if (e.name != stem)
+        throw SchemeFormatError(file, 0, "element name '" + e.name + "' differs from the file name '" + stem + "'");
+    if (find(e.name)) throw SchemeFormatError(file, 0, "duplicate element name '" + e.name + "'");
+    elements_.push_back(std::move(e));
+}
 
 std::vector<std::string> ElementLibrary::names() const {
     std::vector<std::string> n;

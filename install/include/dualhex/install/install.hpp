@@ -32,8 +32,10 @@ enum class OutsideRoot { Coarse, Mirror };
 
 struct InstallOptions {
     OutsideRoot outside_root = OutsideRoot::Coarse;
-    /// The balance the grid must have (with pairing). Strong: the 8 elements' domain.
-    Balance balance = Balance::Strong;
+    /// The balance the grid must have (with pairing). Weak (default, as `dualhex install`):
+    /// accepts weakly, hence also strongly, balanced grids (a weak grid needs the WeakRule);
+    /// Strong: only the 8 strong elements' domain.
+    Balance balance = Balance::Weak;
 };
 
 /// A grid that cannot be installed (not paired / not balanced) or a leaf the rule or the

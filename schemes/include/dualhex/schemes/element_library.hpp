@@ -1,11 +1,19 @@
 #pragma once
 // The element library: every `*.element` file of a directory, parsed and validated.
 //
-// Where the files are found (default_elements_directory), first match wins:
+// The shipped elements (schemes/elements/) are compiled into the library
+// (embedded_elements.hpp): load_default() uses them unless DUALHEX_ELEMENTS names a
+// directory, so a program built against an installed or relocated dualhex never needs to
+// find a directory. load(directory) reads a user library.
+//
+// Where the files are found on disk (default_elements_directory: `dualhex element`, the
+// directory() of the embedded library, tools that copy the files), first match wins:
 //   1. the environment variable DUALHEX_ELEMENTS (a directory), if set and non-empty;
 //   2. <directory of the running executable>/../share/dualhex/elements (an installed
 //      tree: `install(DIRECTORY ...)` puts them in ${CMAKE_INSTALL_DATADIR}/dualhex/elements);
-//   3. the source tree's schemes/elements (compile-time path, for the build tree).
+//   3. <an ancestor of the binary holding this code>/share/dualhex/elements (up to 6 levels
+//      up: a shared module such as the installed Python extension);
+//   4. the source tree's schemes/elements (compile-time path, for the build tree).
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -44,6 +52,10 @@ struct ElementScanEntry {
 
 /// See the header comment. Throws SchemeFormatError if none of the places exists.
 [[nodiscard]] std::filesystem::path default_elements_directory();
+/// default_elements_directory(), or an empty path if none of the places exists.
+[[nodiscard]] std::filesystem::path find_elements_directory();
+/// The pseudo-directory the embedded elements' `file` names lie in ("<embedded>/F.element").
+inline constexpr const char* kEmbeddedElementsDirectory = "<embedded>";
 /// The compile-time source-tree directory (may not exist in an installed tree).
 [[nodiscard]] std::filesystem::path source_elements_directory();
 
@@ -60,7 +72,10 @@ public:
     /// element that fails check_element, a name that differs from the file stem, or a
     /// duplicate name is a SchemeFormatError naming the file.
     [[nodiscard]] static ElementLibrary load(const std::filesystem::path& directory);
-    /// load(default_elements_directory()).
+    /// The shipped elements compiled into the library, checked as strictly as load();
+    /// directory() is find_elements_directory() (possibly empty).
+    [[nodiscard]] static ElementLibrary load_embedded();
+    /// load(DUALHEX_ELEMENTS) if that variable is set and non-empty, else load_embedded().
     [[nodiscard]] static ElementLibrary load_default();
 
     [[nodiscard]] const std::filesystem::path& directory() const { return directory_; }
@@ -77,6 +92,11 @@ public:
                                        const LatticePoint& translation = {}) const;
 
 private:
+    /// Appends `e` unless it is invalid, misnamed (name != file stem) or a duplicate
+    /// (SchemeFormatError naming its file).
+    void add_strict(Element e);
+    void sort_by_name();
+
     std::filesystem::path directory_;
     std::vector<Element> elements_;  // sorted by name
 };

@@ -1,0 +1,87 @@
+#include "mesh_options.hpp"
+
+#include <functional>
+#include <stdexcept>
+#include <type_traits>
+
+namespace dualhex::python {
+namespace {
+
+using Options = mesher::MeshPipelineOptions;
+
+struct OptionBinding {
+    std::string name;
+    std::function<void(Options&, const py::handle&)> set;
+    std::function<py::object(const Options&)> get;
+};
+
+// A plain field of Options or of a base of it (bool is not taken for a number).
+template <class T, class Owner>
+OptionBinding field(std::string name, T Owner::*member) {
+    static_assert(std::is_base_of_v<Owner, Options>);
+    return {name,
+            [name, member](Options& o, const py::handle& v) {
+                if constexpr (!std::is_same_v<T, bool>)
+                    if (py::isinstance<py::bool_>(v)) throw py::type_error(name + ": expected a number, got bool");
+                try {
+                    o.*member = v.cast<T>();
+                } catch (const py::cast_error&) {
+                    throw py::type_error(name + ": cannot take a " + std::string(py::str(py::type::of(v))));
+                }
+            },
+            [member](const Options& o) { return py::cast(o.*member); }};
+}
+
+OptionBinding balance_field() {
+    return {"balance",
+            [](Options& o, const py::handle& v) {
+                const std::string s = py::isinstance<py::str>(v) ? v.cast<std::string>() : std::string(py::repr(v));
+                if (s == "weak") o.balance = Balance::Weak;
+                else if (s == "strong") o.balance = Balance::Strong;
+                else throw std::invalid_argument("balance must be 'weak' or 'strong', got " + s);
+            },
+            [](const Options& o) { return py::cast(o.balance == Balance::Strong ? "strong" : "weak"); }};
+}
+
+// One line per option of MeshPipelineOptions (mesher/mesh_pipeline.hpp).
+const std::vector<OptionBinding>& options_table() {
+    static const std::vector<OptionBinding> table{
+        balance_field(),
+        field("max_depth", &Options::max_depth),
+        field("smooth_iterations", &Options::smooth_iterations),
+        field("untangle_rounds", &Options::untangle_rounds),
+        field("untangle_below", &Options::untangle_below),
+    };
+    return table;
+}
+
+}  // namespace
+
+std::vector<std::string> mesh_option_names() {
+    std::vector<std::string> names;
+    for (const auto& o : options_table()) names.push_back(o.name);
+    return names;
+}
+
+void apply_mesh_options(const py::dict& kwargs, Options& options) {
+    for (const auto& [key, value] : kwargs) {
+        const std::string name = py::str(key);
+        const OptionBinding* binding = nullptr;
+        for (const auto& o : options_table())
+            if (o.name == name) binding = &o;
+        if (!binding) {
+            std::string known;
+            for (const auto& n : mesh_option_names()) known += (known.empty() ? "" : ", ") + n;
+            throw py::type_error("mesh() got an unexpected keyword argument '" + name + "' (known: " + known + ")");
+        }
+        binding->set(options, value);
+    }
+}
+
+py::dict mesh_options_dict(const Options& options) {
+    py::dict d;
+    for (const auto& o : options_table()) d[py::str(o.name)] = o.get(options);
+    return d;
+}
+
+}  // namespace dualhex::python
