@@ -23,6 +23,7 @@ namespace {
 struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int max_depth = 6, smooth = 5;
+    double feature_angle = 30.0;
     bool json = false, force = false;
 };
 
@@ -53,6 +54,7 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.balance = opt.balance == "strong" ? Balance::Strong : Balance::Weak;
     options.max_depth = opt.max_depth;
     options.smooth_iterations = opt.smooth;
+    options.feature_angle = opt.feature_angle;
     if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
     mesher::MeshPipelineResult r = mesher::mesh_surface(tree, options);
 
@@ -75,6 +77,19 @@ void run_mesh(const MeshOptionsCli& opt) {
                     {"vertices", r.mesh.points.size()},
                     {"boundary_vertices", r.boundary_vertices},
                     {"inverted_after_projection", r.inverted_after_projection},
+                    {"features",
+                     {{"angle", opt.feature_angle},
+                      {"corners", r.features.corners},
+                      {"corners_snapped", r.features.corners_snapped},
+                      {"curves", r.features.curves},
+                      {"curves_snapped", r.features.curves_snapped},
+                      {"curve_vertices", r.features.curve_vertices},
+                      {"inverted_before", r.features.inverted_before},
+                      {"inverted_after", r.features.inverted_after},
+                      {"sharp_samples", r.creases.samples},
+                      {"sharp_samples_kept", r.creases.samples_kept},
+                      {"crease_edges", r.creases.crease_edges},
+                      {"spurious_creases", r.creases.spurious_creases}}},
                     {"smooth_iterations", r.smooth_iterations_done},
                     {"untangled_vertices", r.untangled_vertices},
                     {"scaled_jacobian",
@@ -92,6 +107,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"dual", r.ms.dual},
                       {"extract", r.ms.extract},
                       {"project", r.ms.project},
+                      {"features", r.ms.features},
                       {"smooth", r.ms.smooth},
                       {"untangle", r.ms.untangle},
                       {"report", r.ms.report},
@@ -107,13 +123,19 @@ void run_mesh(const MeshOptionsCli& opt) {
                     100 * q.share_negative, 100 * q.share_below_02);
         std::printf("inverted:         %zu after projection; %d smoothing iterations; %zu vertex pull-backs\n",
                     r.inverted_after_projection, r.smooth_iterations_done, r.untangled_vertices);
+        if (opt.feature_angle > 0)
+            std::printf("features:         %zu/%zu corners, %zu/%zu curves snapped (%zu curve vertices); inverted "
+                        "%zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%%; %zu/%zu creases spurious\n",
+                        r.features.corners_snapped, r.features.corners, r.features.curves_snapped, r.features.curves,
+                        r.features.curve_vertices, r.features.inverted_before, r.features.inverted_after,
+                        100 * r.creases.kept_share(), r.creases.spurious_creases, r.creases.crease_edges);
         std::printf("singular edges:   %s (interior, valence: count)\n", histogram_text(r.singular_edge_valences).c_str());
         std::printf("surface distance: max %.3g, mean %.3g (of the bbox diagonal)\n", r.hausdorff.max,
                     r.hausdorff.mean);
         std::printf("time (ms):        octree %.1f, balance+pair %.1f, install %.1f, verify %.1f, dual %.1f, "
-                    "extract %.1f, project %.1f, smooth %.1f, untangle %.1f, report %.1f, write %.1f\n",
+                    "extract %.1f, project %.1f, features %.1f, smooth %.1f, untangle %.1f, report %.1f, write %.1f\n",
                     r.ms.octree, r.ms.balance_pair, r.ms.install, r.ms.verify, r.ms.dual, r.ms.extract, r.ms.project,
-                    r.ms.smooth, r.ms.untangle, r.ms.report, r.ms.write);
+                    r.ms.features, r.ms.smooth, r.ms.untangle, r.ms.report, r.ms.write);
         std::printf("wrote %s\n", opt.output.c_str());
     }
 }
@@ -134,6 +156,10 @@ void register_mesh(CLI::App& app) {
     sub->add_option("--max-depth", opt->max_depth, "Octree max depth (default 6)")->check(CLI::Range(1, 10));
     sub->add_option("--smooth", opt->smooth, "Laplacian smoothing iterations of the interior vertices (default 5)")
         ->check(CLI::Range(0, 1000));
+    sub->add_option("--feature-angle", opt->feature_angle,
+                    "Sharp features: input edges whose normals deviate by more than DEG degrees are kept as hex "
+                    "creases (default 30; 0: off)")
+        ->check(CLI::Range(0.0, 179.0));
     add_json_flag(*sub, opt->json);
     sub->callback([opt] { run_mesh(*opt); });
 }

@@ -33,6 +33,8 @@ void check_options(const MeshPipelineOptions& options) {
     if (options.max_depth < 1 || options.max_depth > 12)
         throw std::invalid_argument("max depth must be in [1, 12], got " + std::to_string(options.max_depth));
     if (options.smooth_iterations < 0) throw std::invalid_argument("smoothing iterations must be >= 0");
+    if (!(options.feature_angle >= 0 && options.feature_angle < 180))
+        throw std::invalid_argument("feature angle must be 0 (off) or in (0, 180) degrees");
 }
 
 }  // namespace
@@ -66,13 +68,27 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     if (mesh.hexes.empty()) throw std::runtime_error("no hex centroid inside the surface (max depth too small?)");
 
     QualityState state;
-    const BoundaryProjection projection = timed(options, "project", ms.project, [&] {
+    BoundaryProjection projection = timed(options, "project", ms.project, [&] {
         BoundaryProjection p = project_boundary(mesh, tree);
         state = quality_state(mesh);
         return p;
     });
     result.boundary_vertices = projection.boundary_vertices;
     result.inverted_after_projection = state.inverted;
+    geometry::FeatureSet features;
+    timed(options, "features", ms.features, [&] {
+        if (options.feature_angle <= 0) return;
+        geometry::FeatureOptions feature_options;
+        feature_options.angle_degrees = options.feature_angle;
+        features = geometry::detect_features(tree.surface(), feature_options);
+        VertexConstraints constraints;
+        result.features = snap_features(mesh, features, constraints);
+        // untangle pulls vertices back towards `unprojected`: pin the snapped ones in place
+        for (std::size_t v = 0; v < mesh.points.size(); ++v)
+            if (constraints.role[v] == VertexRole::Curve || constraints.role[v] == VertexRole::Corner)
+                projection.unprojected[v] = mesh.points[v];
+        state = quality_state(mesh);
+    });
     result.smooth_iterations_done = timed(options, "smooth", ms.smooth, [&] {
         return smooth_interior(mesh, projection.on_boundary, options.smooth_iterations, state);
     });
@@ -84,6 +100,8 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         result.quality = geometry::summarize(state.scaled_jacobian);
         result.singular_edge_valences = interior_singular_edge_valences(mesh);
         result.hausdorff = geometry::boundary_to_surface_distance(mesh, tree);
+        if (options.feature_angle > 0)
+            result.creases = measure_creases(mesh, tree.surface(), features, options.feature_angle);
     });
     return result;
 }

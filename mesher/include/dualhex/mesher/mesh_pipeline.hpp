@@ -11,6 +11,7 @@
 //   dual       install_stage.hpp root_clipped_dual    -> clipped dual, one hex per primal vertex (exact)
 //   extract    extract.hpp extract_inside             -> embedded hexes whose centroid is inside
 //   project    project.hpp project_boundary           boundary quads' vertices -> closest surface points
+//   features   features.hpp snap_features             boundary vertices and edge chains -> input corners and curves
 //   smooth     smooth.hpp smooth_interior             Laplacian of interior vertices, never more inverted
 //   untangle   untangle.hpp untangle_towards          bad hexes' vertices pulled back towards the dual
 //   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance
@@ -31,6 +32,8 @@
 #include "dualhex/geometry/surface_octree.hpp"
 #include "dualhex/grid/neighbours.hpp"
 #include "dualhex/mesher/default_shape.hpp"
+#include "dualhex/mesher/feature_report.hpp"
+#include "dualhex/mesher/features.hpp"
 #include "dualhex/mesher/mesh_report.hpp"
 #include "dualhex/mesher/quality_state.hpp"
 
@@ -49,6 +52,9 @@ struct MeshPipelineOptions {
     int smooth_iterations = 5;
     int untangle_rounds = 10;
     double untangle_below = 0.05;
+    /// Sharp features: normal deviation (degrees) above which an input edge is a feature
+    /// (geometry/feature_curves.hpp); 0 turns the features stage off.
+    double feature_angle = 30.0;
     /// Called with a short stage name ("octree", "pair", ...) before each stage (may be empty).
     std::function<void(const std::string&)> progress;
 };
@@ -57,7 +63,7 @@ struct MeshPipelineOptions {
 /// least paired and balanced refinement of it (the same grid as pairing the octree directly).
 struct MeshTimes {
     double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, extract = 0,
-           project = 0, smooth = 0, untangle = 0, report = 0, write = 0;
+           project = 0, features = 0, smooth = 0, untangle = 0, report = 0, write = 0;
 };
 
 struct MeshPipelineResult {
@@ -69,6 +75,8 @@ struct MeshPipelineResult {
     std::map<int, std::size_t> dual_edge_valences;  ///< of the whole clipped dual
     std::size_t boundary_vertices = 0;    ///< projected vertices
     std::size_t inverted_after_projection = 0;
+    FeatureSnapReport features;           ///< zeros if the stage is off
+    CreaseMeasure creases;                ///< at 0.5% of the bbox diagonal (report stage; zeros if off)
     int smooth_iterations_done = 0;       ///< accepted Laplacian iterations
     std::size_t untangled_vertices = 0;   ///< vertex moves back (sum over rounds)
     QualitySummary quality;
