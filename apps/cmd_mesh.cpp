@@ -23,7 +23,7 @@ namespace {
 struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int max_depth = 6, smooth = 5;
-    double feature_angle = 30.0;
+    double feature_angle = 45.0;
     bool json = false, force = false;
 };
 
@@ -158,7 +158,7 @@ void register_mesh(CLI::App& app) {
         ->check(CLI::Range(0, 1000));
     sub->add_option("--feature-angle", opt->feature_angle,
                     "Sharp features: input edges whose normals deviate by more than DEG degrees are kept as hex "
-                    "creases (default 30; 0: off)")
+                    "creases (default 45; 0: off)")
         ->check(CLI::Range(0.0, 179.0));
     add_json_flag(*sub, opt->json);
     sub->callback([opt] { run_mesh(*opt); });

@@ -80,12 +80,7 @@ public:
         report_.inverted_before = count_inverted(mesh_);
         if (!g_.vertices.empty()) {
             snap_corners();
-            std::vector<std::size_t> order(features_.curves.size());
-            for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-            std::vector<double> length;
-            for (const auto& curve : features_.curves) length.push_back(curve.length());
-            std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return length[a] < length[b]; });
-            for (std::size_t i : order) report_.curves_snapped += snap_curve(i) ? 1 : 0;
+            snap_curves();
         }
         report_.inverted_after = count_inverted(mesh_);
         return report_;
@@ -100,6 +95,45 @@ private:
     std::unordered_set<std::uint64_t> used_edges_;
     std::unordered_map<int, int> corner_vertex_;  // input corner id -> hex vertex
     FeatureSnapReport report_;
+
+    // What the curve pass changes, to restart it.
+    struct State {
+        Points points;
+        VertexConstraints constraints;
+        std::unordered_set<std::uint64_t> used_edges;
+        FeatureSnapReport report;
+    };
+    [[nodiscard]] State state() const { return {mesh_.points, c_, used_edges_, report_}; }
+    void restore(const State& s) {
+        mesh_.points = s.points;
+        c_ = s.constraints;
+        used_edges_ = s.used_edges;
+        report_ = s.report;
+    }
+
+    // Shortest curves first; a curve that finds no path (walled off by earlier paths) goes
+    // first in the next of a few passes (rip-up and retry); the pass snapping most wins.
+    void snap_curves() {
+        constexpr int kPasses = 4;
+        std::vector<std::size_t> order(features_.curves.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::vector<double> length;
+        for (const auto& curve : features_.curves) length.push_back(curve.length());
+        std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return length[a] < length[b]; });
+        const State start = state();
+        State best = start;
+        for (int pass = 0; pass < kPasses; ++pass) {
+            if (pass > 0) restore(start);
+            std::vector<std::size_t> failed, snapped;
+            for (std::size_t i : order) (snap_curve(i) ? snapped : failed).push_back(i);
+            report_.curves_snapped = snapped.size();
+            if (pass == 0 || report_.curves_snapped > best.report.curves_snapped) best = state();
+            if (failed.empty()) break;
+            order = failed;
+            order.insert(order.end(), snapped.begin(), snapped.end());
+        }
+        restore(best);
+    }
 
     [[nodiscard]] const Eigen::Vector3d& at(int v) const { return mesh_.points[static_cast<std::size_t>(v)]; }
     [[nodiscard]] bool is_free(int v) const {

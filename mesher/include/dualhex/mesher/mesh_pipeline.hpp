@@ -54,7 +54,7 @@ struct MeshPipelineOptions {
     double untangle_below = 0.05;
     /// Sharp features: normal deviation (degrees) above which an input edge is a feature
     /// (geometry/feature_curves.hpp); 0 turns the features stage off.
-    double feature_angle = 30.0;
+    double feature_angle = 45.0;
     /// Called with a short stage name ("octree", "pair", ...) before each stage (may be empty).
     std::function<void(const std::string&)> progress;
 };
