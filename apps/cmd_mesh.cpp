@@ -88,6 +88,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"inverted_after", r.features.inverted_after},
                       {"sharp_samples", r.creases.samples},
                       {"sharp_samples_kept", r.creases.samples_kept},
+                      {"sharp_samples_kept_after_snap", r.creases_snapped.samples_kept},
                       {"crease_edges", r.creases.crease_edges},
                       {"spurious_creases", r.creases.spurious_creases}}},
                     {"smooth_iterations", r.smooth_iterations_done},
@@ -125,10 +126,12 @@ void run_mesh(const MeshOptionsCli& opt) {
                     r.inverted_after_projection, r.smooth_iterations_done, r.untangled_vertices);
         if (opt.feature_angle > 0)
             std::printf("features:         %zu/%zu corners, %zu/%zu curves snapped (%zu curve vertices); inverted "
-                        "%zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%%; %zu/%zu creases spurious\n",
+                        "%zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%% (%.1f%% after "
+                        "snapping); %zu/%zu creases spurious\n",
                         r.features.corners_snapped, r.features.corners, r.features.curves_snapped, r.features.curves,
                         r.features.curve_vertices, r.features.inverted_before, r.features.inverted_after,
-                        100 * r.creases.kept_share(), r.creases.spurious_creases, r.creases.crease_edges);
+                        100 * r.creases.kept_share(), 100 * r.creases_snapped.kept_share(), r.creases.spurious_creases,
+                        r.creases.crease_edges);
         std::printf("singular edges:   %s (interior, valence: count)\n", histogram_text(r.singular_edge_valences).c_str());
         std::printf("surface distance: max %.3g, mean %.3g (of the bbox diagonal)\n", r.hausdorff.max,
                     r.hausdorff.mean);

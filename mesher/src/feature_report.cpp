@@ -102,7 +102,8 @@ CreaseMeasure measure_creases(const geometry::HexMesh& mesh, const geometry::Tri
 
     std::vector<Segment> input;
     for (const auto& e : features.edges)
-        input.push_back({surface.vertices[static_cast<std::size_t>(e[0])], surface.vertices[static_cast<std::size_t>(e[1])]});
+        input.push_back(
+            {surface.vertices[static_cast<std::size_t>(e[0])], surface.vertices[static_cast<std::size_t>(e[1])]});
     std::vector<Segment> creases = crease_edges(mesh, angle_degrees / 2);
 
     CreaseMeasure m;

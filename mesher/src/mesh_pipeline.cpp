@@ -76,6 +76,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     result.boundary_vertices = projection.boundary_vertices;
     result.inverted_after_projection = state.inverted;
     geometry::FeatureSet features;
+    HexMesh snapped;  // the mesh as the features stage left it, measured in the report
     timed(options, "features", ms.features, [&] {
         if (options.feature_angle <= 0) return;
         geometry::FeatureOptions feature_options;
@@ -83,11 +84,8 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         features = geometry::detect_features(tree.surface(), feature_options);
         VertexConstraints constraints;
         result.features = snap_features(mesh, features, constraints);
-        // untangle pulls vertices back towards `unprojected`: pin the snapped ones in place
-        for (std::size_t v = 0; v < mesh.points.size(); ++v)
-            if (constraints.role[v] == VertexRole::Curve || constraints.role[v] == VertexRole::Corner)
-                projection.unprojected[v] = mesh.points[v];
         state = quality_state(mesh);
+        snapped.points = mesh.points;
     });
     result.smooth_iterations_done = timed(options, "smooth", ms.smooth, [&] {
         return smooth_interior(mesh, projection.on_boundary, options.smooth_iterations, state);
@@ -100,8 +98,11 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         result.quality = geometry::summarize(state.scaled_jacobian);
         result.singular_edge_valences = interior_singular_edge_valences(mesh);
         result.hausdorff = geometry::boundary_to_surface_distance(mesh, tree);
-        if (options.feature_angle > 0)
+        if (options.feature_angle > 0) {
             result.creases = measure_creases(mesh, tree.surface(), features, options.feature_angle);
+            snapped.hexes = mesh.hexes;
+            result.creases_snapped = measure_creases(snapped, tree.surface(), features, options.feature_angle);
+        }
     });
     return result;
 }

@@ -76,7 +76,11 @@ struct MeshPipelineResult {
     std::size_t boundary_vertices = 0;    ///< projected vertices
     std::size_t inverted_after_projection = 0;
     FeatureSnapReport features;           ///< zeros if the stage is off
-    CreaseMeasure creases;                ///< at 0.5% of the bbox diagonal (report stage; zeros if off)
+    /// Sharp-edge samples and creases at 0.5% of the bbox diagonal (zeros if off): of the
+    /// output, and of the mesh as the features stage left it. smooth moves interior
+    /// vertices only; untangle may pull snapped vertices of bad hexes back (it knows no
+    /// vertex roles), trading kept creases for fewer inverted hexes.
+    CreaseMeasure creases, creases_snapped;
     int smooth_iterations_done = 0;       ///< accepted Laplacian iterations
     std::size_t untangled_vertices = 0;   ///< vertex moves back (sum over rounds)
     QualitySummary quality;
