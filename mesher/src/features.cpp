@@ -94,6 +94,7 @@ private:
     BoundaryGraph g_;
     std::unordered_set<std::uint64_t> used_edges_;
     std::unordered_map<int, int> corner_vertex_;  // input corner id -> hex vertex
+    std::unordered_map<int, int> pending_;        // corner vertex -> curve ends at it not yet snapped
     FeatureSnapReport report_;
 
     // What the curve pass changes, to restart it.
@@ -102,24 +103,30 @@ private:
         VertexConstraints constraints;
         std::unordered_set<std::uint64_t> used_edges;
         FeatureSnapReport report;
+        std::unordered_map<int, int> pending;
     };
-    [[nodiscard]] State state() const { return {mesh_.points, c_, used_edges_, report_}; }
+    [[nodiscard]] State state() const { return {mesh_.points, c_, used_edges_, report_, pending_}; }
     void restore(const State& s) {
         mesh_.points = s.points;
         c_ = s.constraints;
         used_edges_ = s.used_edges;
         report_ = s.report;
+        pending_ = s.pending;
     }
 
     // Shortest curves first; a curve that finds no path (walled off by earlier paths) goes
     // first in the next of a few passes (rip-up and retry); the pass snapping most wins.
     void snap_curves() {
-        constexpr int kPasses = 4;
+        constexpr int kPasses = 8;
         std::vector<std::size_t> order(features_.curves.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
         std::vector<double> length;
         for (const auto& curve : features_.curves) length.push_back(curve.length());
         std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return length[a] < length[b]; });
+        for (const auto& curve : features_.curves)
+            if (!curve.closed)
+                for (int end : {curve.vertices.front(), curve.vertices.back()})
+                    if (corner_vertex_.contains(end)) ++pending_[corner_vertex_.at(end)];
         const State start = state();
         State best = start;
         for (int pass = 0; pass < kPasses; ++pass) {
@@ -231,12 +238,31 @@ private:
     // Finds a path s -> t near `line` in widening tubes and moves its inner vertices onto it.
     bool snap_path(int s, int t, const Points& line, int id) {
         const double h = g_.mean_edge;
+        // the narrow tubes also keep clear of corners that still need their edges; the last
+        // attempt (anywhere) does not, so that a crowded corner can still be reached
         for (const double tube : {3 * h, 12 * h, kInf}) {
             const std::vector<int> path = shortest_path(s, t, line, tube);
             if (path.empty()) continue;
             for (std::size_t i = 1; i < path.size(); ++i) used_edges_.insert(detail::edge_key(path[i - 1], path[i]));
+            for (int end : {s, t})
+                if (pending_.contains(end)) --pending_[end];
             place_on_curve(path, line, id);
             return true;
+        }
+        return false;
+    }
+
+    // Whether entering v takes the last edges a foreign corner next to it needs for its
+    // curves still to come (a valence-3 corner with 3 curves has none to spare).
+    [[nodiscard]] bool starves_corner(int v, int s, int t) const {
+        for (int c : g_.adj[static_cast<std::size_t>(v)]) {
+            if (c == s || c == t || c_.role[static_cast<std::size_t>(c)] != VertexRole::Corner) continue;
+            const auto it = pending_.find(c);
+            if (it == pending_.end() || it->second <= 0) continue;
+            int free_edges = 0;
+            for (int w : g_.adj[static_cast<std::size_t>(c)])
+                free_edges += is_free(w) && !used_edges_.contains(detail::edge_key(c, w)) ? 1 : 0;
+            if (free_edges <= it->second) return true;
         }
         return false;
     }
@@ -262,7 +288,7 @@ private:
             if (u == t) break;
             if (d > dist[u]) continue;
             for (int v : g_.adj[static_cast<std::size_t>(u)]) {
-                if (v != t && (!is_free(v) || line_distance(v) > tube)) continue;
+                if (v != t && (!is_free(v) || line_distance(v) > tube || (tube < kInf && starves_corner(v, s, t)))) continue;
                 if (used_edges_.contains(detail::edge_key(u, v))) continue;
                 const Eigen::Vector3d midpoint = 0.5 * (at(u) + at(v));
                 const double off = (line_distance(u) + line_distance(v) +

@@ -20,7 +20,10 @@
 // along boundary edges between the curve's two corner vertices (Dijkstra; an edge costs
 // its length times 1 + weight * mean distance of its ends and midpoint to the curve / h,
 // h = mean boundary edge length), never through a vertex or edge another curve or corner
-// holds, searched in a tube around the curve that widens on failure. The path's inner
+// holds, searched in a tube around the curve that widens on failure (3, 12 edge lengths,
+// then anywhere); in the two tubes a path may not take the last free edges of a foreign
+// corner that still has curves to come. A curve left without a path goes first in the
+// next of 8 passes (rip-up and retry); the pass snapping most curves wins. The path's inner
 // vertices move onto the curve (closest points if they come in order along it, else
 // spaced by the path's arc length). A closed curve, or one from a corner back to itself,
 // is cut in two halves at free vertices nearest to arc 0 and half its length. Curves
