@@ -84,6 +84,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"curves", r.features.curves},
                       {"curves_snapped", r.features.curves_snapped},
                       {"curve_vertices", r.features.curve_vertices},
+                      {"patch_moves", r.features.patch_moves},
                       {"inverted_before", r.features.inverted_before},
                       {"inverted_after", r.features.inverted_after},
                       {"sharp_samples", r.creases.samples},
@@ -125,11 +126,11 @@ void run_mesh(const MeshOptionsCli& opt) {
         std::printf("inverted:         %zu after projection; %d smoothing iterations; %zu vertex pull-backs\n",
                     r.inverted_after_projection, r.smooth_iterations_done, r.untangled_vertices);
         if (opt.feature_angle > 0)
-            std::printf("features:         %zu/%zu corners, %zu/%zu curves snapped (%zu curve vertices); inverted "
-                        "%zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%% (%.1f%% after "
-                        "snapping); %zu/%zu creases spurious\n",
+            std::printf("features:         %zu/%zu corners, %zu/%zu curves snapped (%zu curve vertices, %zu moved "
+                        "to their patch); inverted %zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%% "
+                        "(%.1f%% after snapping); %zu/%zu creases spurious\n",
                         r.features.corners_snapped, r.features.corners, r.features.curves_snapped, r.features.curves,
-                        r.features.curve_vertices, r.features.inverted_before, r.features.inverted_after,
+                        r.features.curve_vertices, r.features.patch_moves, r.features.inverted_before, r.features.inverted_after,
                         100 * r.creases.kept_share(), 100 * r.creases_snapped.kept_share(), r.creases.spurious_creases,
                         r.creases.crease_edges);
         std::printf("singular edges:   %s (interior, valence: count)\n", histogram_text(r.singular_edge_valences).c_str());

@@ -81,6 +81,13 @@ TEST(GeometryFeatures, CubeHasTwelveEdgesEightCornersTwelveCurves) {
         EXPECT_NEAR(c.length(), 1.0, 1e-12);
         EXPECT_EQ(c.points.size(), c.vertices.size());
     }
+    EXPECT_EQ(f.patches, 6);  // the faces (each two triangles across a flat diagonal)
+    ASSERT_EQ(f.patch.size(), 12u);
+    for (const auto& c : f.curves) {  // two different faces on its two sides
+        EXPECT_GE(c.sides[0], 0);
+        EXPECT_GE(c.sides[1], 0);
+        EXPECT_NE(c.sides[0], c.sides[1]);
+    }
     for (const auto& e : f.edges) {  // an edge of the cube: its ends differ in one coordinate
         const Eigen::Vector3d d = unit_cube_surface().vertices[static_cast<std::size_t>(e[0])] -
                                   unit_cube_surface().vertices[static_cast<std::size_t>(e[1])];
@@ -93,6 +100,7 @@ TEST(GeometryFeatures, SmoothIcosphereHasNone) {
     EXPECT_TRUE(f.edges.empty());
     EXPECT_TRUE(f.corners.empty());
     EXPECT_TRUE(f.curves.empty());
+    EXPECT_EQ(f.patches, 1);
     // the bare icosahedron bends by ~41.8 degrees per edge: every edge is a feature at 30
     FeatureOptions low;
     low.angle_degrees = 30;
@@ -109,8 +117,12 @@ TEST(GeometryFeatures, PrismCapsAreClosedLoopsWithoutCorners) {
     EXPECT_EQ(f.edges.size(), 48u);
     EXPECT_TRUE(f.corners.empty());
     ASSERT_EQ(f.curves.size(), 2u);
+    EXPECT_EQ(f.patches, 3);  // two caps and the side
     for (const auto& c : f.curves) {
         EXPECT_TRUE(c.closed);
+        // the side is on the same side of neither rim: walked counter-clockwise seen from
+        // outside, the bottom rim (z = 0) has the side on one hand and the top rim on the other
+        EXPECT_NE(c.sides[0], c.sides[1]);
         EXPECT_EQ(c.vertices.size(), 24u);
         EXPECT_EQ(std::set<int>(c.vertices.begin(), c.vertices.end()).size(), 24u);
         EXPECT_NEAR(c.length(), 24 * 2 * std::sin(M_PI / 24), 1e-12);
@@ -119,6 +131,35 @@ TEST(GeometryFeatures, PrismCapsAreClosedLoopsWithoutCorners) {
     const FeatureSet square = detect_features(ngon_prism(4));
     EXPECT_EQ(square.corners.size(), 8u);
     EXPECT_EQ(square.curves.size(), 12u);
+    EXPECT_EQ(square.patches, 6);
+}
+
+TEST(GeometryFeatures, CurveSidesFollowOrientation) {
+    // the unit cube's edge from (0,0,0) to (1,0,0): seen from outside the bottom face
+    // (z = 0) is on one hand and the front face (y = 0) on the other; reversing the walk
+    // swaps them
+    const TriangleSurface cube = unit_cube_surface();
+    const FeatureSet f = detect_features(cube);
+    auto patch_with_normal = [&](const Eigen::Vector3d& n) {
+        for (std::size_t t = 0; t < cube.triangles.size(); ++t) {
+            const auto& tri = cube.triangles[t];
+            auto p = [&](int i) { return cube.vertices[static_cast<std::size_t>(tri[static_cast<std::size_t>(i)])]; };
+            const Eigen::Vector3d m = (p(1) - p(0)).cross(p(2) - p(0));
+            if (m.normalized().isApprox(n)) return f.patch[t];
+        }
+        return -1;
+    };
+    const int bottom = patch_with_normal({0, 0, -1}), front = patch_with_normal({0, -1, 0});
+    ASSERT_GE(bottom, 0);
+    ASSERT_GE(front, 0);
+    for (const auto& c : f.curves) {
+        if (std::minmax(c.vertices[0], c.vertices[1]) != std::minmax(0, 1)) continue;
+        // walking 0 -> 1 (+x) with the edge's outward normal n = (0,-1,-1) up, the left is
+        // n x (+x) = (0,-1,1): towards +z, i.e. along the front face (y = 0)
+        const std::array<int, 2> forward{front, bottom};
+        const std::array<int, 2> expected = c.vertices[0] == 0 ? forward : std::array<int, 2>{bottom, front};
+        EXPECT_EQ(c.sides, expected);
+    }
 }
 
 TEST(GeometryFeatures, TurnAngleMakesCorners) {

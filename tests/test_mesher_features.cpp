@@ -11,6 +11,7 @@
 #include "dualhex/geometry/feature_curves.hpp"
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/mesher/default_shape.hpp"
+#include "dualhex/mesher/feature_patches.hpp"
 #include "dualhex/mesher/feature_report.hpp"
 #include "dualhex/mesher/features.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
@@ -159,6 +160,33 @@ TEST(MesherFeatures, ChamferedLBlockIsSnappedBack) {
     EXPECT_EQ(corners, 12u);
     EXPECT_EQ(curve, 70u);
     EXPECT_GT(surface, 0u);
+}
+
+TEST(MesherFeatures, VertexOnTheWrongPatchGoesBack) {
+    const int n = 4;
+    const TriangleSurface l = boundary_surface(block(2, 2, 1, 1.0, [](int i, int j, int) { return in_l(i, j, 1); }));
+    const FeatureSet features = detect_features(l);
+    const AabbTree tree(l);
+    HexMesh mesh = block(2 * n, 2 * n, n, 1.0 / n, [&](int i, int j, int) { return in_l(i, j, n); });
+    VertexConstraints constraints;
+    const FeatureSnapReport r = snap_features(mesh, features, constraints);
+    ASSERT_EQ(r.curves_snapped, 18u);
+    EXPECT_EQ(project_to_patches(mesh, tree, features, constraints, r.path_edges), 0u);  // all in place
+    // (0.25, 0, 0.5) lies on the face y = 0 beside the edge x = y = 0; put it across, on x = 0
+    const std::size_t v = 1 + (2 * n + 1) * (2 * n + 1) * 2;
+    ASSERT_TRUE(mesh.points[v].isApprox(Eigen::Vector3d(0.25, 0, 0.5))) << mesh.points[v].transpose();
+    ASSERT_EQ(constraints.role[v], VertexRole::Surface);
+    mesh.points[v] = {0, 0.1, 0.5};
+    EXPECT_EQ(project_to_patches(mesh, tree, features, constraints, r.path_edges), 1u);
+    // the mean of its neighbours (0,0,0.5), (0.5,0,0.5), (0.25,0,0.25), (0.25,0,0.75): back home
+    EXPECT_TRUE(mesh.points[v].isApprox(Eigen::Vector3d(0.25, 0, 0.5))) << mesh.points[v].transpose();
+    EXPECT_EQ(project_to_patches(mesh, tree, features, constraints, r.path_edges), 0u);
+    // without the path edges nothing says which side a vertex is on
+    mesh.points[v] = {0, 0.1, 0.5};
+    EXPECT_EQ(project_to_patches(mesh, tree, features, constraints, {}), 0u);
+    FeatureSet wrong = features;
+    wrong.patch.pop_back();
+    EXPECT_THROW((void)project_to_patches(mesh, tree, wrong, constraints, r.path_edges), std::invalid_argument);
 }
 
 TEST(MesherFeatures, SmoothTorusIsLeftUnchanged) {

@@ -37,8 +37,10 @@ std::vector<Eigen::Vector3d> triangle_normals(const TriangleSurface& s) {
     return normals;
 }
 
-// Feature edges: the two triangles' normals deviate by more than the angle.
-std::vector<std::array<int, 2>> feature_edges(const TriangleSurface& s, double angle_degrees) {
+// Feature edges: the two triangles' normals deviate by more than the angle; `smooth`
+// receives the triangle pairs across the other edges.
+std::vector<std::array<int, 2>> feature_edges(const TriangleSurface& s, double angle_degrees,
+                                              std::vector<std::array<int, 2>>& smooth) {
     const std::vector<Eigen::Vector3d> normals = triangle_normals(s);
     std::unordered_map<std::uint64_t, std::array<int, 3>> uses;  // key -> count, first, second triangle
     uses.reserve(3 * s.triangles.size());
@@ -58,11 +60,37 @@ std::vector<std::array<int, 2>> feature_edges(const TriangleSurface& s, double a
                                         "-" + std::to_string(b) + " is in " + std::to_string(u[0]) + " triangles");
         const Eigen::Vector3d& n1 = normals[static_cast<std::size_t>(u[1])];
         const Eigen::Vector3d& n2 = normals[static_cast<std::size_t>(u[2])];
-        if (n1.isZero() || n2.isZero()) continue;
-        if (n1.dot(n2) < cos_max) edges.push_back({a, b});
+        if (!n1.isZero() && !n2.isZero() && n1.dot(n2) < cos_max)
+            edges.push_back({a, b});
+        else
+            smooth.push_back({u[1], u[2]});
     }
     std::sort(edges.begin(), edges.end());
     return edges;
+}
+
+// Patch id per triangle: the components of the triangles joined across `smooth` pairs,
+// numbered in order of their smallest triangle.
+std::vector<int> patches(std::size_t triangles, const std::vector<std::array<int, 2>>& smooth, int& count) {
+    std::vector<int> parent(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) parent[t] = static_cast<int>(t);
+    auto find = [&](int t) {
+        while (parent[static_cast<std::size_t>(t)] != t)
+            t = parent[static_cast<std::size_t>(t)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(t)])];
+        return t;
+    };
+    for (const auto& [a, b] : smooth) {
+        const int ra = find(a), rb = find(b);
+        parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+    }
+    std::vector<int> id(triangles, -1);
+    count = 0;
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const int r = find(static_cast<int>(t));
+        if (id[static_cast<std::size_t>(r)] < 0) id[static_cast<std::size_t>(r)] = count++;
+        id[t] = id[static_cast<std::size_t>(r)];
+    }
+    return id;
 }
 
 struct FeatureGraph {
@@ -139,7 +167,9 @@ FeatureSet detect_features(const TriangleSurface& surface, const FeatureOptions&
         throw std::invalid_argument("corner turn angle must be in (0, 180) degrees, got " +
                                     std::to_string(options.turn_degrees));
     FeatureSet out;
-    out.edges = feature_edges(surface, options.angle_degrees);
+    std::vector<std::array<int, 2>> smooth;
+    out.edges = feature_edges(surface, options.angle_degrees, smooth);
+    out.patch = patches(surface.triangles.size(), smooth, out.patches);
     FeatureGraph g;
     g.edges = &out.edges;
     g.edges_at.resize(surface.vertices.size());
@@ -150,11 +180,27 @@ FeatureSet detect_features(const TriangleSurface& surface, const FeatureOptions&
         if (corner[v]) out.corners.push_back(static_cast<int>(v));
 
     std::vector<char> used(out.edges.size(), 0);
+    std::unordered_map<std::uint64_t, int> triangle_of;  // directed edge (a, b) -> its triangle
+    for (std::size_t t = 0; t < surface.triangles.size(); ++t)
+        for (int i = 0; i < 3; ++i) {
+            const auto a = static_cast<std::uint32_t>(surface.triangles[t][i]);
+            const auto b = static_cast<std::uint32_t>(surface.triangles[t][(i + 1) % 3]);
+            triangle_of[static_cast<std::uint64_t>(a) << 32 | b] = static_cast<int>(t);
+        }
+    auto side = [&](int a, int b) {
+        const auto it = triangle_of.find(static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 |
+                                         static_cast<std::uint32_t>(b));
+        return it == triangle_of.end() ? -1 : out.patch[static_cast<std::size_t>(it->second)];
+    };
     for (int c : out.corners)  // open curves (and loops through one corner) start at corners
         for (int e : g.edges_at[static_cast<std::size_t>(c)])
             if (!used[static_cast<std::size_t>(e)]) out.curves.push_back(walk(surface, g, corner, c, e, used));
     for (std::size_t e = 0; e < out.edges.size(); ++e)  // what is left are closed loops
         if (!used[e]) out.curves.push_back(walk(surface, g, corner, out.edges[e][0], static_cast<int>(e), used));
+    for (auto& c : out.curves) {  // counter-clockwise seen from outside: a -> b has its triangle on the left
+        const int a = c.vertices[0], b = c.vertices[1];
+        c.sides = {side(a, b), side(b, a)};
+    }
     return out;
 }
 

@@ -243,7 +243,10 @@ private:
         for (const double tube : {3 * h, 12 * h, kInf}) {
             const std::vector<int> path = shortest_path(s, t, line, tube);
             if (path.empty()) continue;
-            for (std::size_t i = 1; i < path.size(); ++i) used_edges_.insert(detail::edge_key(path[i - 1], path[i]));
+            for (std::size_t i = 1; i < path.size(); ++i) {
+                used_edges_.insert(detail::edge_key(path[i - 1], path[i]));
+                report_.path_edges.push_back({path[i - 1], path[i], id});
+            }
             for (int end : {s, t})
                 if (pending_.contains(end)) --pending_[end];
             place_on_curve(path, line, id);

@@ -6,6 +6,7 @@
 
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/mesher/extract.hpp"
+#include "dualhex/mesher/feature_patches.hpp"
 #include "dualhex/mesher/install_stage.hpp"
 #include "dualhex/mesher/project.hpp"
 #include "dualhex/mesher/smooth.hpp"
@@ -84,7 +85,10 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         features = geometry::detect_features(tree.surface(), feature_options);
         VertexConstraints constraints;
         result.features = snap_features(mesh, features, constraints);
+        result.features.patch_moves =
+            project_to_patches(mesh, tree, features, constraints, result.features.path_edges);
         state = quality_state(mesh);
+        result.features.inverted_after = state.inverted;
         snapped.points = mesh.points;
     });
     result.smooth_iterations_done = timed(options, "smooth", ms.smooth, [&] {

@@ -5,8 +5,8 @@
 // Input : a closed, edge-manifold TriangleSurface (every edge in exactly two triangles, as
 //         read_surface/clean_surface guarantee) and FeatureOptions.
 // Output: FeatureSet — the feature edges (input vertex ids), the corners (input vertex
-//         ids) and the feature curves, each a polyline of input vertices from corner to
-//         corner, or closed.
+//         ids), the feature curves, each a polyline of input vertices from corner to
+//         corner, or closed, and the patches (triangles joined across non-feature edges).
 // Errors: std::invalid_argument for an angle outside (0, 180) or an edge not used by
 //         exactly two triangles (the message names the edge).
 //
@@ -40,6 +40,8 @@ struct FeatureCurve {
     std::vector<int> vertices;             ///< input vertex ids in order (closed: first not repeated)
     std::vector<Eigen::Vector3d> points;   ///< their positions (same length)
     bool closed = false;                   ///< closed loop without a corner on it
+    /// Patches on its left and right, walking along it seen from outside (outward surface).
+    std::array<int, 2> sides{-1, -1};
     [[nodiscard]] double length() const;
 };
 
@@ -47,6 +49,10 @@ struct FeatureSet {
     std::vector<std::array<int, 2>> edges;  ///< feature edges, smaller id first, sorted
     std::vector<int> corners;               ///< corner vertex ids, sorted
     std::vector<FeatureCurve> curves;
+    /// (triangles): patch id, the triangles joined across non-feature edges, numbered in
+    /// order of their smallest triangle; `patches` of them.
+    std::vector<int> patch;
+    int patches = 0;
     /// The curves as point polylines (closed ones without the repeated first point).
     [[nodiscard]] std::vector<std::vector<Eigen::Vector3d>> polylines() const;
 };

@@ -29,6 +29,7 @@
 // is cut in two halves at free vertices nearest to arc 0 and half its length. Curves
 // whose corners are unsnapped, or with no path, are left as they are (counted).
 #include <cstddef>
+#include <vector>
 
 #include "dualhex/geometry/feature_curves.hpp"
 #include "dualhex/geometry/hex_output.hpp"
@@ -41,12 +42,20 @@ struct FeatureSnapOptions {
     double max_corner_move = 2.0;   ///< in mean boundary edge lengths
 };
 
+/// A boundary edge of a snapped path, from -> to along its curve's direction.
+struct PathEdge {
+    int from = 0, to = 0;
+    int curve = 0;  ///< index into FeatureSet::curves
+};
+
 struct FeatureSnapReport {
     std::size_t corners = 0, corners_snapped = 0;
     std::size_t curves = 0, curves_snapped = 0;  ///< curves whose whole path was found
     std::size_t curve_vertices = 0;              ///< vertices given the Curve role
     std::size_t inverted_before = 0, inverted_after = 0;  ///< hexes with scaled Jacobian <= 0
     double max_move = 0;                         ///< largest vertex displacement (absolute)
+    std::vector<PathEdge> path_edges;            ///< the snapped paths' boundary edges
+    std::size_t patch_moves = 0;                 ///< left 0 here; the pipeline: project_to_patches' count
 };
 
 /// Throws std::invalid_argument if constraints are neither empty nor of the mesh's size, or

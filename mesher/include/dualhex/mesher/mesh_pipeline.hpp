@@ -11,7 +11,8 @@
 //   dual       install_stage.hpp root_clipped_dual    -> clipped dual, one hex per primal vertex (exact)
 //   extract    extract.hpp extract_inside             -> embedded hexes whose centroid is inside
 //   project    project.hpp project_boundary           boundary quads' vertices -> closest surface points
-//   features   features.hpp snap_features             boundary vertices and edge chains -> input corners and curves
+//   features   features.hpp snap_features             boundary vertices and edge chains -> input corners and curves,
+//              feature_patches.hpp project_to_patches  then the vertices beside them onto their side's patch
 //   smooth     smooth.hpp smooth_interior             Laplacian of interior vertices, never more inverted
 //   untangle   untangle.hpp untangle_towards          bad hexes' vertices pulled back towards the dual
 //   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance
@@ -75,7 +76,9 @@ struct MeshPipelineResult {
     std::map<int, std::size_t> dual_edge_valences;  ///< of the whole clipped dual
     std::size_t boundary_vertices = 0;    ///< projected vertices
     std::size_t inverted_after_projection = 0;
-    FeatureSnapReport features;           ///< zeros if the stage is off
+    /// snap_features' report, with patch_moves from project_to_patches and inverted_after
+    /// after both (zeros if the stage is off).
+    FeatureSnapReport features;
     /// Sharp-edge samples and creases at 0.5% of the bbox diagonal (zeros if off): of the
     /// output, and of the mesh as the features stage left it. smooth moves interior
     /// vertices only; untangle may pull snapped vertices of bad hexes back (it knows no
