@@ -115,7 +115,8 @@ private:
     }
 
     // Shortest curves first; a curve that finds no path (walled off by earlier paths) goes
-    // first in the next of a few passes (rip-up and retry); the pass snapping most wins.
+    // first in the next of a few passes (rip-up and retry); the pass snapping the greatest
+    // length of curve wins (what the sharp-edge samples measure).
     void snap_curves() {
         constexpr int kPasses = 8;
         std::vector<std::size_t> order(features_.curves.size());
@@ -129,12 +130,23 @@ private:
                     if (corner_vertex_.contains(end)) ++pending_[corner_vertex_.at(end)];
         const State start = state();
         State best = start;
+        double best_length = -1;
         for (int pass = 0; pass < kPasses; ++pass) {
             if (pass > 0) restore(start);
             std::vector<std::size_t> failed, snapped;
-            for (std::size_t i : order) (snap_curve(i) ? snapped : failed).push_back(i);
+            double snapped_length = 0;
+            for (std::size_t i : order)
+                if (snap_curve(i)) {
+                    snapped.push_back(i);
+                    snapped_length += length[i];
+                } else {
+                    failed.push_back(i);
+                }
             report_.curves_snapped = snapped.size();
-            if (pass == 0 || report_.curves_snapped > best.report.curves_snapped) best = state();
+            if (snapped_length > best_length) {
+                best = state();
+                best_length = snapped_length;
+            }
             if (failed.empty()) break;
             order = failed;
             order.insert(order.end(), snapped.begin(), snapped.end());
