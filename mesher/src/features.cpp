@@ -13,6 +13,7 @@
 
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/mesher/quality_state.hpp"
+#include "corner_exits.hpp"
 #include "hex_edges.hpp"
 
 namespace dualhex::mesher {
@@ -95,6 +96,7 @@ private:
     std::unordered_set<std::uint64_t> used_edges_;
     std::unordered_map<int, int> corner_vertex_;  // input corner id -> hex vertex
     std::unordered_map<int, int> pending_;        // corner vertex -> curve ends at it not yet snapped
+    std::unordered_map<int, int> exit_owner_;     // a corner's neighbour -> the curve leaving the corner by it
     FeatureSnapReport report_;
 
     // What the curve pass changes, to restart it.
@@ -128,6 +130,7 @@ private:
             if (!curve.closed)
                 for (int end : {curve.vertices.front(), curve.vertices.back()})
                     if (corner_vertex_.contains(end)) ++pending_[corner_vertex_.at(end)];
+        assign_exits();
         const State start = state();
         State best = start;
         double best_length = -1;
@@ -219,6 +222,37 @@ private:
         return best;
     }
 
+    // Per corner vertex, the neighbour each curve end there leaves by (corner_exits.hpp),
+    // reserved for that curve: the tangent is the direction to the curve's point one edge
+    // length in. Only a reservation: forcing the paths through them snapped less.
+    void assign_exits() {
+        std::unordered_map<int, std::vector<int>> ends;  // corner vertex -> curve * 2 + end
+        for (std::size_t i = 0; i < features_.curves.size(); ++i) {
+            const FeatureCurve& c = features_.curves[i];
+            if (c.closed) continue;
+            for (int end = 0; end < 2; ++end) {
+                const auto it = corner_vertex_.find(end == 0 ? c.vertices.front() : c.vertices.back());
+                if (it != corner_vertex_.end()) ends[it->second].push_back(static_cast<int>(2 * i) + end);
+            }
+        }
+        for (const auto& [v, list] : ends) {
+            const std::vector<int>& adj = g_.adj[static_cast<std::size_t>(v)];
+            std::vector<Eigen::Vector3d> tangents, directions;
+            for (int w : adj) directions.push_back((at(w) - at(v)).normalized());
+            for (int e : list) {
+                const FeatureCurve& c = features_.curves[static_cast<std::size_t>(e / 2)];
+                const double l = c.length(), into = std::min(g_.mean_edge, l / 2);
+                const Eigen::Vector3d p = geometry::point_at_arc(c.points, false, e % 2 == 0 ? into : l - into);
+                tangents.push_back((p - at(v)).normalized());
+            }
+            const std::vector<int> pick = detail::assign_exits(tangents, directions);
+            for (std::size_t k = 0; k < list.size(); ++k) {
+                if (pick[k] < 0) continue;
+                const int w = adj[static_cast<std::size_t>(pick[k])];
+                if (is_free(w)) exit_owner_[w] = list[k] / 2;
+            }
+        }
+    }
     bool snap_curve(std::size_t index) {
         const FeatureCurve& curve = features_.curves[index];
         const int id = static_cast<int>(index);
@@ -253,7 +287,7 @@ private:
         // the narrow tubes also keep clear of corners that still need their edges; the last
         // attempt (anywhere) does not, so that a crowded corner can still be reached
         for (const double tube : {3 * h, 12 * h, kInf}) {
-            const std::vector<int> path = shortest_path(s, t, line, tube);
+            const std::vector<int> path = shortest_path(s, t, line, tube, id);
             if (path.empty()) continue;
             for (std::size_t i = 1; i < path.size(); ++i) {
                 used_edges_.insert(detail::edge_key(path[i - 1], path[i]));
@@ -282,9 +316,16 @@ private:
         return false;
     }
 
-    // Dijkstra over free boundary vertices within `tube` of `line` (t always allowed);
-    // the vertex ids s..t, or empty if t is unreachable.
-    [[nodiscard]] std::vector<int> shortest_path(int s, int t, const Points& line, double tube) const {
+    // Whether v is reserved as another curve's exit from its corner.
+    [[nodiscard]] bool reserved_for_other(int v, int curve) const {
+        const auto it = exit_owner_.find(v);
+        return it != exit_owner_.end() && it->second != curve;
+    }
+
+    // Dijkstra over free boundary vertices within `tube` of `line` (t always allowed; in the
+    // narrow tubes neither starving a corner nor taking another curve's exit); the vertex
+    // ids s..t, or empty if t is unreachable.
+    [[nodiscard]] std::vector<int> shortest_path(int s, int t, const Points& line, double tube, int curve) const {
         std::unordered_map<int, double> to_line, dist;
         std::unordered_map<int, int> prev;
         auto line_distance = [&](int v) {
@@ -303,7 +344,10 @@ private:
             if (u == t) break;
             if (d > dist[u]) continue;
             for (int v : g_.adj[static_cast<std::size_t>(u)]) {
-                if (v != t && (!is_free(v) || line_distance(v) > tube || (tube < kInf && starves_corner(v, s, t)))) continue;
+                const bool narrow = tube < kInf;
+                if (v != t && (!is_free(v) || line_distance(v) > tube ||
+                               (narrow && (starves_corner(v, s, t) || reserved_for_other(v, curve)))))
+                    continue;
                 if (used_edges_.contains(detail::edge_key(u, v))) continue;
                 const Eigen::Vector3d midpoint = 0.5 * (at(u) + at(v));
                 const double off = (line_distance(u) + line_distance(v) +

@@ -21,8 +21,10 @@
 // its length times 1 + weight * mean distance of its ends and midpoint to the curve / h,
 // h = mean boundary edge length), never through a vertex or edge another curve or corner
 // holds, searched in a tube around the curve that widens on failure (3, 12 edge lengths,
-// then anywhere); in the two tubes a path may not take the last free edges of a foreign
-// corner that still has curves to come. A curve left without a path goes first in the
+// then anywhere); in the two tubes a path may neither take the last free edges of a foreign
+// corner that still has curves to come, nor a corner neighbour reserved as another curve's
+// exit (each corner's curve ends are matched to its neighbours by direction, the best
+// injective match). A curve left without a path goes first in the
 // next of 8 passes (rip-up and retry); the pass snapping most curves wins. The path's inner
 // vertices move onto the curve (closest points if they come in order along it, else
 // spaced by the path's arc length). A closed curve, or one from a corner back to itself,
