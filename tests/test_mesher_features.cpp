@@ -16,6 +16,7 @@
 #include "dualhex/mesher/features.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/mesher/project.hpp"
+#include "../mesher/src/corner_exits.hpp"  // internal: the exit matching
 
 using namespace dualhex;
 using namespace dualhex::geometry;
@@ -96,6 +97,17 @@ TEST(MesherFeatures, HexVolumeHelper) {
     HexMesh mirrored = block(1, 1, 1, 1, [](int, int, int) { return true; });
     for (auto& p : mirrored.points) p.x() = -p.x();
     EXPECT_NEAR(hex_volume(mirrored), -1, 1e-12);
+}
+
+TEST(MesherFeatures, CornerExitsMatchByDirection) {
+    using dualhex::mesher::detail::assign_exits;
+    const std::vector<Eigen::Vector3d> dirs{{0, 1, 0}, {1, 0, 0}, {-1, 0, 0}};
+    EXPECT_EQ(assign_exits({{1, 0.1, 0}, {0.1, 1, 0}}, dirs), (std::vector<int>{1, 0}));
+    // greedy in order would give the first tangent its best (1: 0.938) and leave the second
+    // 0.6; the best injective match trades: 0.9 + 0.98 > 0.938 + 0.6
+    const std::vector<Eigen::Vector3d> two{{1, 0, 0}, {0.7, 0.7, 0}};
+    EXPECT_EQ(assign_exits({{0.9, 0.44, 0}, {0.6, 0.8, 0}}, two), (std::vector<int>{0, 1}));
+    EXPECT_EQ(assign_exits({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, dirs), (std::vector<int>{-1, -1, -1, -1}));
 }
 
 TEST(MesherFeatures, CubeKeepsEdgesCornersAndVolume) {
