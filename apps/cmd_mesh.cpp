@@ -96,6 +96,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"spurious_creases_after_snap", r.creases_snapped.spurious_creases}}},
                     {"smooth_iterations", r.smooth_iterations_done},
                     {"untangled_vertices", r.untangled_vertices},
+                    {"restored_vertices", r.restored_vertices},
                     {"scaled_jacobian",
                      {{"min", q.min}, {"mean", q.mean}, {"below_0", q.share_negative}, {"below_0_2", q.share_below_02}}},
                     {"singular_edge_valences", histogram_json(r.singular_edge_valences)},
@@ -114,6 +115,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"features", r.ms.features},
                       {"smooth", r.ms.smooth},
                       {"untangle", r.ms.untangle},
+                      {"restore", r.ms.restore},
                       {"report", r.ms.report},
                       {"write", r.ms.write}}}});
     } else {
@@ -125,8 +127,9 @@ void run_mesh(const MeshOptionsCli& opt) {
                     r.mesh.hexes.size(), r.mesh.points.size(), r.boundary_vertices);
         std::printf("scaled Jacobian:  min %.4f, mean %.4f, < 0: %.4f%%, < 0.2: %.4f%%\n", q.min, q.mean,
                     100 * q.share_negative, 100 * q.share_below_02);
-        std::printf("inverted:         %zu after projection; %d smoothing iterations; %zu vertex pull-backs\n",
-                    r.inverted_after_projection, r.smooth_iterations_done, r.untangled_vertices);
+        std::printf("inverted:         %zu after projection; %d smoothing iterations; %zu vertex pull-backs; %zu "
+                    "restored to their feature\n",
+                    r.inverted_after_projection, r.smooth_iterations_done, r.untangled_vertices, r.restored_vertices);
         if (opt.feature_angle > 0)
             std::printf("features:         %zu/%zu corners, %zu/%zu curves snapped (%zu curve vertices, %zu moved "
                         "to their patch); inverted %zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%% "
@@ -139,9 +142,10 @@ void run_mesh(const MeshOptionsCli& opt) {
         std::printf("surface distance: max %.3g, mean %.3g (of the bbox diagonal)\n", r.hausdorff.max,
                     r.hausdorff.mean);
         std::printf("time (ms):        octree %.1f, balance+pair %.1f, install %.1f, verify %.1f, dual %.1f, "
-                    "extract %.1f, project %.1f, features %.1f, smooth %.1f, untangle %.1f, report %.1f, write %.1f\n",
+                    "extract %.1f, project %.1f, features %.1f, smooth %.1f, untangle %.1f, restore %.1f, report %.1f, "
+                    "write %.1f\n",
                     r.ms.octree, r.ms.balance_pair, r.ms.install, r.ms.verify, r.ms.dual, r.ms.extract, r.ms.project,
-                    r.ms.features, r.ms.smooth, r.ms.untangle, r.ms.report, r.ms.write);
+                    r.ms.features, r.ms.smooth, r.ms.untangle, r.ms.restore, r.ms.report, r.ms.write);
         std::printf("wrote %s\n", opt.output.c_str());
     }
 }

@@ -13,6 +13,7 @@
 #include "dualhex/mesher/default_shape.hpp"
 #include "dualhex/mesher/feature_patches.hpp"
 #include "dualhex/mesher/feature_report.hpp"
+#include "dualhex/mesher/feature_restore.hpp"
 #include "dualhex/mesher/features.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/mesher/project.hpp"
@@ -199,6 +200,28 @@ TEST(MesherFeatures, VertexOnTheWrongPatchGoesBack) {
     FeatureSet wrong = features;
     wrong.patch.pop_back();
     EXPECT_THROW((void)project_to_patches(mesh, tree, wrong, constraints, r.path_edges), std::invalid_argument);
+}
+
+TEST(MesherFeatures, RestoreMovesBackOnlyWhereQualityAllows) {
+    HexMesh mesh = block(2, 2, 2, 1, [](int, int, int) { return true; });
+    VertexConstraints c = VertexConstraints::interior(mesh.points.size());
+    c.role[0] = VertexRole::Corner;    // (0,0,0)
+    c.role[2] = VertexRole::Curve;     // (2,0,0)
+    c.curve[2] = 0;
+    c.role[13] = VertexRole::Interior;  // the centre: never moved by restore
+    std::vector<Eigen::Vector3d> targets = mesh.points;
+    targets[0] = {0.1, 0.1, 0.1};   // harmless
+    targets[2] = {0.5, 0.5, 0.5};   // would invert its hex, half-way too
+    targets[13] = {1.2, 1, 1};
+    QualityState state = quality_state(mesh);
+    EXPECT_EQ(restore_features(mesh, targets, c, 0.2, 5, state), 1u);
+    EXPECT_EQ(mesh.points[0], targets[0]);
+    EXPECT_EQ(mesh.points[2], Eigen::Vector3d(2, 0, 0));
+    EXPECT_EQ(mesh.points[13], Eigen::Vector3d(1, 1, 1));
+    EXPECT_EQ(state.inverted, 0u);
+    EXPECT_EQ(state.scaled_jacobian, scaled_jacobians(mesh));  // the state follows the moves
+    targets.pop_back();
+    EXPECT_THROW((void)restore_features(mesh, targets, c, 0.2, 5, state), std::invalid_argument);
 }
 
 TEST(MesherFeatures, SmoothTorusIsLeftUnchanged) {

@@ -7,6 +7,7 @@
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/mesher/extract.hpp"
 #include "dualhex/mesher/feature_patches.hpp"
+#include "dualhex/mesher/feature_restore.hpp"
 #include "dualhex/mesher/install_stage.hpp"
 #include "dualhex/mesher/project.hpp"
 #include "dualhex/mesher/smooth.hpp"
@@ -16,6 +17,11 @@ namespace dualhex::mesher {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// A snapped vertex goes back to its feature only if no hex around it falls below this
+// (or falls further if already below): the report's quality bar, so the share of hexes
+// below 0.2 does not grow for the creases' sake.
+constexpr double kRestoreBelow = 0.2;
 
 // Runs one named stage: reports its name, times it into `ms`, returns what it returns.
 template <class Stage>
@@ -78,12 +84,12 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     result.inverted_after_projection = state.inverted;
     geometry::FeatureSet features;
     HexMesh snapped;  // the mesh as the features stage left it, measured in the report
+    VertexConstraints constraints;
     timed(options, "features", ms.features, [&] {
         if (options.feature_angle <= 0) return;
         geometry::FeatureOptions feature_options;
         feature_options.angle_degrees = options.feature_angle;
         features = geometry::detect_features(tree.surface(), feature_options);
-        VertexConstraints constraints;
         result.features = snap_features(mesh, features, constraints);
         result.features.patch_moves =
             project_to_patches(mesh, tree, features, constraints, result.features.path_edges);
@@ -96,6 +102,12 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     });
     result.untangled_vertices = timed(options, "untangle", ms.untangle, [&] {
         return untangle_towards(mesh, projection.unprojected, options.untangle_rounds, options.untangle_below, state);
+    });
+
+    result.restored_vertices = timed(options, "restore", ms.restore, [&] {
+        if (options.feature_angle <= 0) return std::size_t{0};
+        return restore_features(mesh, snapped.points, constraints, kRestoreBelow, options.untangle_rounds,
+                                state);
     });
 
     timed(options, "report", ms.report, [&] {

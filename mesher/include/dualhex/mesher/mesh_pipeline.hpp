@@ -15,6 +15,7 @@
 //              feature_patches.hpp project_to_patches  then the vertices beside them onto their side's patch
 //   smooth     smooth.hpp smooth_interior             Laplacian of interior vertices, never more inverted
 //   untangle   untangle.hpp untangle_towards          bad hexes' vertices pulled back towards the dual
+//   restore    feature_restore.hpp restore_features    snapped vertices back where that costs no quality
 //   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance
 //
 // Writing the file is the caller's job (geometry::write_hex_mesh); MeshTimes::write is left 0.
@@ -64,7 +65,7 @@ struct MeshPipelineOptions {
 /// least paired and balanced refinement of it (the same grid as pairing the octree directly).
 struct MeshTimes {
     double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, extract = 0,
-           project = 0, features = 0, smooth = 0, untangle = 0, report = 0, write = 0;
+           project = 0, features = 0, smooth = 0, untangle = 0, restore = 0, report = 0, write = 0;
 };
 
 struct MeshPipelineResult {
@@ -82,10 +83,11 @@ struct MeshPipelineResult {
     /// Sharp-edge samples and creases at 0.5% of the bbox diagonal (zeros if off): of the
     /// output, and of the mesh as the features stage left it. smooth moves interior
     /// vertices only; untangle may pull snapped vertices of bad hexes back (it knows no
-    /// vertex roles), trading kept creases for fewer inverted hexes.
+    /// vertex roles), restore returns them where that costs no quality.
     CreaseMeasure creases, creases_snapped;
     int smooth_iterations_done = 0;       ///< accepted Laplacian iterations
     std::size_t untangled_vertices = 0;   ///< vertex moves back (sum over rounds)
+    std::size_t restored_vertices = 0;    ///< snapped vertices' moves back to their curves (sum over rounds)
     QualitySummary quality;
     /// Interior edges (not on a boundary quad) of the kept mesh with != 4 hexes: valence -> count.
     std::map<int, std::size_t> singular_edge_valences;
