@@ -197,6 +197,8 @@ TEST(MesherFeatures, VertexOnTheWrongPatchGoesBack) {
     // without the path edges nothing says which side a vertex is on
     mesh.points[v] = {0, 0.1, 0.5};
     EXPECT_EQ(project_to_patches(mesh, tree, features, constraints, {}), 0u);
+    EXPECT_THROW((void)project_to_patches(mesh, tree, features, constraints, {{0, 1, 18}}), std::invalid_argument);
+    EXPECT_THROW((void)project_to_patches(mesh, tree, features, constraints, {{0, 100000, 0}}), std::invalid_argument);
     FeatureSet wrong = features;
     wrong.patch.pop_back();
     EXPECT_THROW((void)project_to_patches(mesh, tree, wrong, constraints, r.path_edges), std::invalid_argument);

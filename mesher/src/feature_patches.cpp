@@ -2,6 +2,7 @@
 // their boundary region.
 #include "dualhex/mesher/feature_patches.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <unordered_map>
@@ -108,6 +109,11 @@ std::size_t project_to_patches(HexMesh& mesh, const geometry::AabbTree& tree, co
                                     " patch ids for " + std::to_string(s.triangles.size()) + " triangles");
     if (constraints.role.size() != mesh.points.size())
         throw std::invalid_argument("feature patches: constraints do not match the mesh");
+    for (const PathEdge& e : path_edges)
+        if (e.curve < 0 || static_cast<std::size_t>(e.curve) >= features.curves.size() || e.from < 0 || e.to < 0 ||
+            static_cast<std::size_t>(std::max(e.from, e.to)) >= mesh.points.size())
+            throw std::invalid_argument("feature patches: path edge " + std::to_string(e.from) + "-" +
+                                        std::to_string(e.to) + " of curve " + std::to_string(e.curve) + " out of range");
     if (path_edges.empty()) return 0;
     const auto quads = geometry::boundary_quads(mesh);
     const std::vector<int> quad_want = quad_wishes(quads, features, path_edges);

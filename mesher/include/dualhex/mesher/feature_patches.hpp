@@ -26,8 +26,8 @@
 
 namespace dualhex::mesher {
 
-/// Throws std::invalid_argument if the FeatureSet's patches do not match the tree's surface
-/// or the constraints not the mesh.
+/// Throws std::invalid_argument if the FeatureSet's patches do not match the tree's surface,
+/// the constraints not the mesh, or a path edge names a curve or vertex out of range.
 std::size_t project_to_patches(geometry::HexMesh& mesh, const geometry::AabbTree& tree,
                                const geometry::FeatureSet& features, const VertexConstraints& constraints,
                                const std::vector<PathEdge>& path_edges);
