@@ -136,6 +136,20 @@ TEST(MesherFeatures, CubeKeepsEdgesCornersAndVolume) {
     EXPECT_EQ(on.mesh.hexes, off.mesh.hexes);  // the stage only moves vertices
 }
 
+TEST(MesherFeatures, CadModelsKeepTheirSharpEdges) {
+    // the features stage's own result (before smoothing and untangling): >= 95% of the
+    // sharp-edge samples within 0.5% of the diagonal of a crease (README: 100% and 97.0%)
+    for (const char* name : {"tue_B0.stl", "cgal_fandisk.off"}) {
+        const TriangleSurface s = read_surface(std::string(DUALHEX_SHARED_DATA) + "/surfaces/" + name);
+        const MeshPipelineResult r = run_pipeline(s, 6, 45);
+        EXPECT_GE(r.creases_snapped.kept_share(), 0.95) << name;
+        EXPECT_EQ(r.features.corners_snapped, r.features.corners) << name;
+        EXPECT_GE(r.features.curves_snapped + 2, r.features.curves) << name;
+        EXPECT_GT(r.creases.kept_share(), 0.8) << name;  // the output, after untangle and restore
+        EXPECT_EQ(r.quality.share_negative, 0.0) << name;
+    }
+}
+
 TEST(MesherFeatures, ChamferedLBlockIsSnappedBack) {
     const int n = 4;  // spacing 1/4
     const TriangleSurface l = boundary_surface(block(2, 2, 1, 1.0, [](int i, int j, int) { return in_l(i, j, 1); }));
