@@ -3,6 +3,7 @@
 // and volume; a chamfered hand-made L block is snapped back exactly; a smooth torus is left
 // unchanged; the measurement sees chamfers and spurious creases; bad input refused.
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include <cmath>
 #include <functional>
@@ -187,6 +188,35 @@ TEST(MesherFeatures, ChamferedLBlockIsSnappedBack) {
     EXPECT_EQ(corners, 12u);
     EXPECT_EQ(curve, 70u);
     EXPECT_GT(surface, 0u);
+}
+
+// Any rotation and chamfer depth (0.05 .. 0.45 of the spacing): the L block comes back exact.
+RC_GTEST_PROP(MesherFeatures, RotatedChamferedLBlockIsSnappedBack, ()) {
+    const int n = 4;
+    const double depth = *rc::gen::inRange(5, 46) / 100.0;
+    const Eigen::Vector3d axis(*rc::gen::inRange(-100, 101), *rc::gen::inRange(-100, 101), *rc::gen::inRange(1, 101));
+    const double angle = *rc::gen::inRange(0, 628) / 100.0;
+    const Eigen::Matrix3d rot = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+    auto rotate = [&](std::vector<Eigen::Vector3d>& points) {
+        for (auto& p : points) p = rot * p;
+    };
+    TriangleSurface l = boundary_surface(block(2, 2, 1, 1.0, [](int i, int j, int) { return in_l(i, j, 1); }));
+    rotate(l.vertices);
+    const FeatureSet features = detect_features(l);
+    RC_ASSERT(features.corners.size() == 12u);
+    const AabbTree tree(l);
+    HexMesh mesh = block(2 * n, 2 * n, n, 1.0 / n, [&](int i, int j, int) { return in_l(i, j, n); });
+    rotate(mesh.points);
+    chamfer(mesh, tree, depth / n);
+    VertexConstraints constraints;
+    const FeatureSnapReport r = snap_features(mesh, features, constraints);
+    RC_ASSERT(r.corners_snapped == 12u);
+    RC_ASSERT(r.curves_snapped == 18u);
+    RC_ASSERT(r.inverted_after == 0u);
+    RC_ASSERT(std::abs(hex_volume(mesh) - 3.0) < 1e-9);
+    const CreaseMeasure m = measure_creases(mesh, l, features, 45);
+    RC_ASSERT(m.samples_kept == m.samples);
+    RC_ASSERT(m.spurious_creases == 0u);
 }
 
 TEST(MesherFeatures, VertexOnTheWrongPatchGoesBack) {
