@@ -118,9 +118,10 @@ private:
 
     // Shortest curves first; a curve that finds no path (walled off by earlier paths) goes
     // first in the next of a few passes (rip-up and retry); the pass snapping the greatest
-    // length of curve wins (what the sharp-edge samples measure).
+    // length of curve wins (what the sharp-edge samples measure); two passes without a
+    // better one end the search.
     void snap_curves() {
-        constexpr int kPasses = 8;
+        constexpr int kPasses = 8, kStalePasses = 2;
         std::vector<std::size_t> order(features_.curves.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
         std::vector<double> length;
@@ -134,6 +135,7 @@ private:
         const State start = state();
         State best = start;
         double best_length = -1;
+        int stale = 0;  // passes since the best
         for (int pass = 0; pass < kPasses; ++pass) {
             if (pass > 0) restore(start);
             std::vector<std::size_t> failed, snapped;
@@ -149,6 +151,9 @@ private:
             if (snapped_length > best_length) {
                 best = state();
                 best_length = snapped_length;
+                stale = 0;
+            } else if (++stale == kStalePasses) {
+                break;  // noisy inputs (hundreds of curves on an organic model) stop early
             }
             if (failed.empty()) break;
             order = failed;
