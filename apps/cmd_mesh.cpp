@@ -24,6 +24,7 @@ namespace {
 struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int smooth = 5;
+    double feature_angle = 45.0;
     bool json = false, force = false;
     MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
@@ -56,6 +57,7 @@ void run_mesh(const MeshOptionsCli& opt) {
     static_cast<mesher::MeshSizeOptions&>(options) = size;
     options.balance = opt.balance == "strong" ? Balance::Strong : Balance::Weak;
     options.smooth_iterations = opt.smooth;
+    options.feature_angle = opt.feature_angle;
     if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
     warn_if_capped(size, tree);
     mesher::MeshPipelineResult r;
@@ -97,8 +99,26 @@ void run_mesh(const MeshOptionsCli& opt) {
                     {"vertices", r.mesh.points.size()},
                     {"boundary_vertices", r.boundary_vertices},
                     {"inverted_after_projection", r.inverted_after_projection},
+                    {"features",
+                     {{"angle", opt.feature_angle},
+                      {"corners", r.features.corners},
+                      {"corners_snapped", r.features.corners_snapped},
+                      {"curves", r.features.curves},
+                      {"curves_snapped", r.features.curves_snapped},
+                      {"curve_vertices", r.features.curve_vertices},
+                      {"patch_moves", r.features.patch_moves},
+                      {"inverted_before", r.features.inverted_before},
+                      {"inverted_after", r.features.inverted_after},
+                      {"sharp_samples", r.creases.samples},
+                      {"sharp_samples_kept", r.creases.samples_kept},
+                      {"sharp_samples_kept_after_snap", r.creases_snapped.samples_kept},
+                      {"crease_edges", r.creases.crease_edges},
+                      {"spurious_creases", r.creases.spurious_creases},
+                      {"crease_edges_after_snap", r.creases_snapped.crease_edges},
+                      {"spurious_creases_after_snap", r.creases_snapped.spurious_creases}}},
                     {"smooth_iterations", r.smooth_iterations_done},
                     {"untangled_vertices", r.untangled_vertices},
+                    {"restored_vertices", r.restored_vertices},
                     {"scaled_jacobian",
                      {{"min", q.min}, {"mean", q.mean}, {"below_0", q.share_negative}, {"below_0_2", q.share_below_02}}},
                     {"singular_edge_valences", histogram_json(r.singular_edge_valences)},
@@ -114,8 +134,10 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"dual", r.ms.dual},
                       {"extract", r.ms.extract},
                       {"project", r.ms.project},
+                      {"features", r.ms.features},
                       {"smooth", r.ms.smooth},
                       {"untangle", r.ms.untangle},
+                      {"restore", r.ms.restore},
                       {"report", r.ms.report},
                       {"write", r.ms.write}}}});
     } else {
@@ -128,15 +150,25 @@ void run_mesh(const MeshOptionsCli& opt) {
                     r.mesh.hexes.size(), r.mesh.points.size(), r.boundary_vertices);
         std::printf("scaled Jacobian:  min %.4f, mean %.4f, < 0: %.4f%%, < 0.2: %.4f%%\n", q.min, q.mean,
                     100 * q.share_negative, 100 * q.share_below_02);
-        std::printf("inverted:         %zu after projection; %d smoothing iterations; %zu vertex pull-backs\n",
-                    r.inverted_after_projection, r.smooth_iterations_done, r.untangled_vertices);
+        std::printf("inverted:         %zu after projection; %d smoothing iterations; %zu vertex pull-backs; %zu "
+                    "restored to their feature\n",
+                    r.inverted_after_projection, r.smooth_iterations_done, r.untangled_vertices, r.restored_vertices);
+        if (opt.feature_angle > 0)
+            std::printf("features:         %zu/%zu corners, %zu/%zu curves snapped (%zu curve vertices, %zu moved "
+                        "to their patch); inverted %zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%% "
+                        "(%.1f%% after snapping); %zu/%zu creases spurious\n",
+                        r.features.corners_snapped, r.features.corners, r.features.curves_snapped, r.features.curves,
+                        r.features.curve_vertices, r.features.patch_moves, r.features.inverted_before, r.features.inverted_after,
+                        100 * r.creases.kept_share(), 100 * r.creases_snapped.kept_share(), r.creases.spurious_creases,
+                        r.creases.crease_edges);
         std::printf("singular edges:   %s (interior, valence: count)\n", histogram_text(r.singular_edge_valences).c_str());
         std::printf("surface distance: max %.3g, mean %.3g (of the bbox diagonal)\n", r.hausdorff.max,
                     r.hausdorff.mean);
         std::printf("time (ms):        octree %.1f, balance+pair %.1f, install %.1f, verify %.1f, dual %.1f, "
-                    "extract %.1f, project %.1f, smooth %.1f, untangle %.1f, report %.1f, write %.1f\n",
+                    "extract %.1f, project %.1f, features %.1f, smooth %.1f, untangle %.1f, restore %.1f, report %.1f, "
+                    "write %.1f\n",
                     r.ms.octree, r.ms.balance_pair, r.ms.install, r.ms.verify, r.ms.dual, r.ms.extract, r.ms.project,
-                    r.ms.smooth, r.ms.untangle, r.ms.report, r.ms.write);
+                    r.ms.features, r.ms.smooth, r.ms.untangle, r.ms.restore, r.ms.report, r.ms.write);
         std::printf("wrote %s\n", opt.output.c_str());
     }
 }
@@ -157,6 +189,10 @@ void register_mesh(CLI::App& app) {
     add_size_options(*sub, opt->size);
     sub->add_option("--smooth", opt->smooth, "Laplacian smoothing iterations of the interior vertices (default 5)")
         ->check(CLI::Range(0, 1000));
+    sub->add_option("--feature-angle", opt->feature_angle,
+                    "Sharp features: input edges whose normals deviate by more than DEG degrees are kept as hex "
+                    "creases (default 45; 0: off)")
+        ->check(CLI::Range(0.0, 179.0));
     add_json_flag(*sub, opt->json);
     sub->callback([opt] { run_mesh(*opt); });
 }

@@ -31,3 +31,4 @@ dualhex_add_test(test_geometry_size_control SOURCES test_geometry_size_control.c
 target_compile_definitions(test_geometry_size_control PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
 add_dependencies(test_geometry_size_control dualhex)
 dualhex_add_test(test_geometry_cell_data SOURCES test_geometry_cell_data.cpp DEPS dualhex::mesher)
+dualhex_add_test(test_geometry_features SOURCES test_geometry_features.cpp DEPS dualhex::geometry)

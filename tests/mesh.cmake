@@ -26,3 +26,6 @@ endif()
 add_test(NAME mesh_gmsh_readback
          COMMAND ${_dualhex_python3} ${CMAKE_CURRENT_SOURCE_DIR}/mesh_gmsh_readback.py
                  $<TARGET_FILE:dualhex> ${CMAKE_CURRENT_BINARY_DIR}/mesh_gmsh_readback ${DUALHEX_SHARED_DATA})
+
+# the features stage and the crease measurement (mesher/features.hpp, feature_report.hpp)
+dualhex_add_test(test_mesher_features SOURCES test_mesher_features.cpp DEPS dualhex::mesher)

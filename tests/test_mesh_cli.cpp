@@ -1,6 +1,7 @@
 // `dualhex mesh` run as a process (DUALHEX_EXE): the default shape meshes and reports
 // the --json keys, an existing output is refused without --force (exit 2), a bad or
-// missing surface exits 3 naming the file, an unknown output extension exits 2.
+// missing surface exits 3 naming the file, an unknown output extension exits 2,
+// --feature-angle keeps the cube's edges (0: off) and refuses angles outside [0, 179].
 #include <gtest/gtest.h>
 
 #include "run_process.hpp"
@@ -94,4 +95,20 @@ TEST_F(MeshCli, BadInputExits3NamingTheFile) {
 TEST_F(MeshCli, UnknownOutputFormatIsAUsageError) {
     const Result r = run({"mesh", "-o", (dir_ / "x.stl").string()});
     EXPECT_EQ(r.rc, 2) << r.err;
+}
+
+TEST_F(MeshCli, FeatureAngleOption) {
+    const std::string cube = std::string(DUALHEX_SHARED_DATA) + "/surfaces/cgal_cube.off";
+    const Result r = run({"mesh", cube, "-o", (dir_ / "cube.vtk").string(), "--max-depth", "3", "--json"});
+    ASSERT_EQ(r.rc, 0) << r.err;
+    const auto f = nlohmann::json::parse(r.out).at("features");
+    EXPECT_EQ(f.at("corners_snapped").get<int>(), 8);
+    EXPECT_EQ(f.at("curves_snapped").get<int>(), 12);
+    EXPECT_EQ(f.at("sharp_samples_kept"), f.at("sharp_samples"));
+    const Result off = run({"mesh", cube, "-o", (dir_ / "off.vtk").string(), "--max-depth", "3", "--json",
+                            "--feature-angle", "0"});
+    ASSERT_EQ(off.rc, 0) << off.err;
+    EXPECT_EQ(nlohmann::json::parse(off.out).at("features").at("curves").get<int>(), 0);
+    EXPECT_EQ(run({"mesh", cube, "-o", (dir_ / "bad.vtk").string(), "--feature-angle", "180"}).rc, 2);
+    EXPECT_EQ(run({"mesh", cube, "-o", (dir_ / "bad.vtk").string(), "--feature-angle", "-5"}).rc, 2);
 }

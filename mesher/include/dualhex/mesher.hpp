@@ -2,6 +2,10 @@
 // The mesher layer in one include: the pipeline and each of its stages.
 #include "dualhex/mesher/default_shape.hpp"
 #include "dualhex/mesher/extract.hpp"
+#include "dualhex/mesher/feature_patches.hpp"
+#include "dualhex/mesher/feature_report.hpp"
+#include "dualhex/mesher/feature_restore.hpp"
+#include "dualhex/mesher/features.hpp"
 #include "dualhex/mesher/install_stage.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/mesher/mesh_report.hpp"

@@ -11,8 +11,11 @@
 //   dual       install_stage.hpp root_clipped_dual    -> clipped dual, one hex per primal vertex (exact)
 //   extract    extract.hpp extract_inside             -> embedded hexes whose centroid is inside
 //   project    project.hpp project_boundary           boundary quads' vertices -> closest surface points
+//   features   features.hpp snap_features             boundary vertices and edge chains -> input corners and curves,
+//              feature_patches.hpp project_to_patches  then the vertices beside them onto their side's patch
 //   smooth     smooth.hpp smooth_interior             Laplacian of interior vertices, never more inverted
 //   untangle   untangle.hpp untangle_towards          bad hexes' vertices pulled back towards the dual
+//   restore    feature_restore.hpp restore_features    snapped vertices back where that costs no quality
 //   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance
 //
 // Writing the file is the caller's job (geometry::write_hex_mesh); MeshTimes::write is left 0.
@@ -33,6 +36,8 @@
 #include "dualhex/geometry/surface_octree.hpp"
 #include "dualhex/grid/neighbours.hpp"
 #include "dualhex/mesher/default_shape.hpp"
+#include "dualhex/mesher/feature_report.hpp"
+#include "dualhex/mesher/features.hpp"
 #include "dualhex/mesher/mesh_report.hpp"
 #include "dualhex/mesher/mesh_size.hpp"
 #include "dualhex/mesher/quality_state.hpp"
@@ -52,6 +57,9 @@ struct MeshPipelineOptions : MeshSizeOptions {
     int smooth_iterations = 5;
     int untangle_rounds = 10;
     double untangle_below = 0.05;
+    /// Sharp features: normal deviation (degrees) above which an input edge is a feature
+    /// (geometry/feature_curves.hpp); 0 turns the features stage off.
+    double feature_angle = 45.0;
     /// Called with a short stage name ("octree", "pair", ...) before each stage (may be empty).
     std::function<void(const std::string&)> progress;
 };
@@ -60,7 +68,7 @@ struct MeshPipelineOptions : MeshSizeOptions {
 /// least paired and balanced refinement of it (the same grid as pairing the octree directly).
 struct MeshTimes {
     double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, extract = 0,
-           project = 0, smooth = 0, untangle = 0, report = 0, write = 0;
+           project = 0, features = 0, smooth = 0, untangle = 0, restore = 0, report = 0, write = 0;
 };
 
 struct MeshPipelineResult {
@@ -77,8 +85,17 @@ struct MeshPipelineResult {
     std::map<int, std::size_t> dual_edge_valences;  ///< of the whole clipped dual
     std::size_t boundary_vertices = 0;    ///< projected vertices
     std::size_t inverted_after_projection = 0;
+    /// snap_features' report, with patch_moves from project_to_patches and inverted_after
+    /// after both (zeros if the stage is off).
+    FeatureSnapReport features;
+    /// Sharp-edge samples and creases at 0.5% of the bbox diagonal (zeros if off): of the
+    /// output, and of the mesh as the features stage left it. smooth moves interior
+    /// vertices only; untangle may pull snapped vertices of bad hexes back (it knows no
+    /// vertex roles), restore returns them where that costs no quality.
+    CreaseMeasure creases, creases_snapped;
     int smooth_iterations_done = 0;       ///< accepted Laplacian iterations
     std::size_t untangled_vertices = 0;   ///< vertex moves back (sum over rounds)
+    std::size_t restored_vertices = 0;    ///< snapped vertices' moves back to their curves (sum over rounds)
     QualitySummary quality;
     /// Interior edges (not on a boundary quad) of the kept mesh with != 4 hexes: valence -> count.
     std::map<int, std::size_t> singular_edge_valences;
