@@ -12,8 +12,8 @@
 #include "histogram_format.hpp"
 
 #include "dualhex/checkers/certificate.hpp"
-#include "dualhex/checkers/install.hpp"
-#include "dualhex/checkers/library.hpp"
+#include "dualhex/install.hpp"
+#include "dualhex/install/library.hpp"
 #include "dualhex/geometry/complex_output.hpp"
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/grid/leaf_file.hpp"

@@ -1,7 +1,7 @@
 // dualhex mesh [INPUT] -o OUT: a closed triangle surface (OBJ/OFF/STL/PLY; none: the
 // embedded default torus) to an all-hex mesh, through the octree, pairing + balancing,
 // element installation, the clipped dual, extraction of the hexes inside, projection of
-// the boundary onto the surface and Laplacian smoothing (geometry/mesh_pipeline.hpp).
+// the boundary onto the surface and Laplacian smoothing (mesher/mesh_pipeline.hpp).
 // Writes OUT by extension (.vtk, .vtu, .mesh) and reports quality and times.
 #include <unistd.h>
 
@@ -14,7 +14,7 @@
 #include "histogram_format.hpp"
 
 #include "dualhex/geometry/hex_output.hpp"
-#include "dualhex/geometry/mesh_pipeline.hpp"
+#include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/geometry/surface.hpp"
 
 namespace dualhex::app {
@@ -39,7 +39,7 @@ void run_mesh(const MeshOptionsCli& opt) {
     geometry::TriangleSurface surface;
     geometry::SurfaceReport report;
     try {
-        surface = opt.input.empty() ? geometry::default_shape() : geometry::read_surface(opt.input, {}, &report);
+        surface = opt.input.empty() ? mesher::default_shape() : geometry::read_surface(opt.input, {}, &report);
     } catch (const geometry::SurfaceError& e) {  // what() names the file
         std::cerr << "error: " << e.what() << '\n';
         throw Exit{kInputError};
@@ -49,12 +49,12 @@ void run_mesh(const MeshOptionsCli& opt) {
     const std::size_t triangles = surface.triangles.size();
     const geometry::AabbTree tree(std::move(surface));
 
-    geometry::MeshPipelineOptions options;
+    mesher::MeshPipelineOptions options;
     options.balance = opt.balance == "strong" ? Balance::Strong : Balance::Weak;
     options.max_depth = opt.max_depth;
     options.smooth_iterations = opt.smooth;
     if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
-    geometry::MeshPipelineResult r = geometry::mesh_surface(tree, options);
+    mesher::MeshPipelineResult r = mesher::mesh_surface(tree, options);
 
     if (progress) std::cerr << "  write...\n";
     const auto t0 = std::chrono::steady_clock::now();

@@ -1,4 +1,4 @@
-// install_bench: times element installation (checkers/install.hpp) and the checks after it.
+// install_bench: times element installation (install/install.hpp) and the checks after it.
 //
 //   install_bench [--elements DIR] [--grid FILE ...] [--flat BASE ...] [--verify] [base levels ...]
 //                                                  (default: flat 4 5, then the sphere grids)
@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "dualhex/checkers/install.hpp"
-#include "dualhex/checkers/library.hpp"
+#include "dualhex/install.hpp"
+#include "dualhex/install/library.hpp"
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
 #include "dualhex/topology/clipped_dual.hpp"

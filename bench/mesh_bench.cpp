@@ -1,4 +1,4 @@
-// mesh_bench: the `dualhex mesh` pipeline (geometry/mesh_pipeline.hpp) on every surface
+// mesh_bench: the `dualhex mesh` pipeline (mesher/mesh_pipeline.hpp) on every surface
 // model of the shared data set at max depth 6 (weak balance, default smoothing).
 //
 //   mesh_bench [--depth N] [--strong] [model ...]   (default: every file in surfaces/)
@@ -18,11 +18,12 @@
 #include <vector>
 
 #include "dualhex/geometry/aabb_tree.hpp"
-#include "dualhex/geometry/mesh_pipeline.hpp"
+#include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/geometry/surface.hpp"
 
 using namespace dualhex;
 using namespace dualhex::geometry;
+using namespace dualhex::mesher;
 
 int main(int argc, char** argv) {
     int depth = 6;

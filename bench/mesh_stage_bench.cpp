@@ -1,4 +1,4 @@
-// mesh_stage_bench: one `dualhex mesh` case (geometry/mesh_pipeline.hpp) timed per stage, in
+// mesh_stage_bench: one `dualhex mesh` case (mesher/mesh_pipeline.hpp) timed per stage, in
 // its own process so the peak memory is the case's own. bench/run_mesh.sh runs the table.
 //
 //   mesh_stage_bench MODEL [--depth N] [--strong] [--out FILE]   (default depth 6, weak)
@@ -18,11 +18,12 @@
 
 #include "dualhex/geometry/aabb_tree.hpp"
 #include "dualhex/geometry/hex_output.hpp"
-#include "dualhex/geometry/mesh_pipeline.hpp"
+#include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/geometry/surface.hpp"
 
 using namespace dualhex;
 using namespace dualhex::geometry;
+using namespace dualhex::mesher;
 
 namespace {
 

@@ -1,4 +1,3 @@
 # tests for the checkers layer
 dualhex_add_test(test_checkers_configurations SOURCES test_checkers_configurations.cpp DEPS dualhex::checkers)
-dualhex_add_test(test_checkers_install SOURCES test_checkers_install.cpp DEPS dualhex::checkers)
 dualhex_add_test(test_compositional SOURCES test_compositional.cpp DEPS dualhex::checkers)

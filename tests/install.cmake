@@ -1,5 +1,7 @@
-# tests for installation into grids: the clipped dual, `dualhex install`, random-grid properties
-dualhex_add_test(test_install_clipped_dual SOURCES test_install_clipped_dual.cpp DEPS dualhex::checkers)
+# tests for the install layer: installation into grids, the clipped dual, `dualhex install`,
+# random-grid properties
+dualhex_add_test(test_install SOURCES test_install.cpp DEPS dualhex::install)
+dualhex_add_test(test_install_clipped_dual SOURCES test_install_clipped_dual.cpp DEPS dualhex::install)
 
 # `dualhex install` as a process
 dualhex_add_test(test_install_cli SOURCES test_install_cli.cpp DEPS nlohmann_json::nlohmann_json)
@@ -8,4 +10,4 @@ target_compile_definitions(test_install_cli PRIVATE DUALHEX_EXE="$<TARGET_FILE:d
 add_dependencies(test_install_cli dualhex dualhex-proof-checker)
 
 # random grids through the whole pipeline (RapidCheck)
-dualhex_add_test(test_install_properties SOURCES test_install_properties.cpp DEPS dualhex::checkers)
+dualhex_add_test(test_install_properties SOURCES test_install_properties.cpp DEPS dualhex::install)

@@ -1,5 +1,5 @@
-# tests for the surface-to-hex pipeline (`dualhex mesh`, geometry/mesh_pipeline.hpp)
-dualhex_add_test(test_mesh_pipeline SOURCES test_mesh_pipeline.cpp DEPS dualhex::geometry)
+# tests for the surface-to-hex pipeline (`dualhex mesh`, mesher/mesh_pipeline.hpp)
+dualhex_add_test(test_mesh_pipeline SOURCES test_mesh_pipeline.cpp DEPS dualhex::mesher)
 
 # `dualhex mesh` as a process
 dualhex_add_test(test_mesh_cli SOURCES test_mesh_cli.cpp DEPS nlohmann_json::nlohmann_json)

@@ -7,8 +7,8 @@
 #include <numeric>
 #include <set>
 
-#include "dualhex/checkers/install.hpp"
-#include "dualhex/checkers/library.hpp"
+#include "dualhex/install.hpp"
+#include "dualhex/install/library.hpp"
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
 #include "dualhex/topology/clipped_dual.hpp"

@@ -23,8 +23,8 @@
 #include <memory>
 #include <sstream>
 
-#include "dualhex/checkers/install.hpp"
-#include "dualhex/checkers/library.hpp"
+#include "dualhex/install.hpp"
+#include "dualhex/install/library.hpp"
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/grid/predicates.hpp"
 #include "dualhex/grid/refinement.hpp"

@@ -1,4 +1,4 @@
-// The surface-to-hex pipeline (geometry/mesh_pipeline.hpp) at max depth <= 5: all-hex
+// The surface-to-hex pipeline (mesher/mesh_pipeline.hpp) at max depth <= 5: all-hex
 // output (8 distinct, valid vertex ids per cell), no inverted hex on the cube and the
 // default torus, the helpers (singular edges, inverted count) on hand-made meshes.
 #include <gtest/gtest.h>
@@ -7,12 +7,13 @@
 #include <string>
 
 #include "dualhex/geometry/aabb_tree.hpp"
-#include "dualhex/geometry/mesh_pipeline.hpp"
+#include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/geometry/surface.hpp"
 
 using namespace dualhex;
 using namespace dualhex::geometry;
+using namespace dualhex::mesher;
 
 namespace {
 

@@ -1,6 +1,6 @@
 // certify_strong: the elements and the 256 strong tori as certificates (certificate.hpp).
 
-#include "assembly.hpp"
+#include "dualhex/install/element_templates.hpp"
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/checkers/periodic_configuration.hpp"
 #include "dualhex/checkers/torus_classes.hpp"

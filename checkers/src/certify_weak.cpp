@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "assembly.hpp"
+#include "dualhex/install/element_templates.hpp"
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/checkers/periodic_configuration.hpp"
 #include "dualhex/checkers/torus_classes.hpp"

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "assembly.hpp"
+#include "dualhex/install/element_templates.hpp"
 #include "window_check.hpp"
 
 namespace dualhex {

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "assembly.hpp"
+#include "dualhex/install/element_templates.hpp"
 #include "window_check.hpp"
 #include "dualhex/checkers/cube_window.hpp"
 #include "dualhex/checkers/periodic_configuration.hpp"

@@ -4,7 +4,8 @@
 // configuration checks and the compositional windows.
 #include <span>
 
-#include "assembly.hpp"
+#include "dualhex/install/element_templates.hpp"
+#include "dualhex/install/open_faces.hpp"
 #include "dualhex/checkers/configuration_report.hpp"
 #include "dualhex/topology/dual.hpp"
 #include "dualhex/topology/histograms.hpp"

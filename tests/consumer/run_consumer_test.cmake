@@ -38,6 +38,7 @@ run("${CMAKE_COMMAND}" -S "${CONSUMER_SOURCE_DIR}" -B "${build}"
 run("${CMAKE_COMMAND}" --build "${build}")
 run("${build}/consumer")
 run("${build}/consumer_all_layers")
+run("${build}/consumer_install")
 
 # The installed CLI runs too.
 run("${prefix}/bin/dualhex" --version)

@@ -1,6 +1,8 @@
 // The clipped dual (see clipped_dual.hpp for the construction and why it is a cube).
 #include "dualhex/topology/clipped_dual.hpp"
 
+#include "dual_cell_cube.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <limits>
@@ -9,14 +11,10 @@
 namespace dualhex {
 namespace {
 
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+using detail::DualCellFaces;
+using detail::oriented_cube;
 
-// Set bits of an 8-bit row (std::popcount is a libgcc call without -mpopcnt).
-constexpr int bits8(unsigned x) {
-    x = x - ((x >> 1) & 0x55U);
-    x = (x & 0x33U) + ((x >> 2) & 0x33U);
-    return static_cast<int>((x + (x >> 4)) & 0x0FU);
-}
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 // Does half-face h walk the directed edge a -> b?
 bool walks(const CellComplex& k, HalfFaceHandle h, VertexHandle a, VertexHandle b) {
@@ -38,42 +36,6 @@ VertexHandle before(const CellComplex& k, HalfFaceHandle h, VertexHandle v) {
         if (loop[i] == v) return h.side() == 0 ? loop[i == 0 ? n - 1 : i - 1] : loop[i + 1 == n ? 0 : i + 1];
     return {};
 }
-
-// Per-vertex scratch: up to 6 face loops (more = not a cube; we stop collecting).
-struct Faces {
-    static constexpr std::size_t kMaxFaces = 8, kMaxLoop = 12;
-    std::array<std::array<std::uint32_t, kMaxLoop>, kMaxFaces> loop{};
-    std::array<std::uint8_t, kMaxFaces> size{};
-    std::size_t n = 0;
-    bool overflow = false;
-    const char* why = nullptr;  // first construction failure
-
-    void clear() {
-        n = 0;
-        overflow = false;
-        why = nullptr;
-    }
-    // Starts a new face; false (and overflow) if there are too many.
-    bool open() {
-        if (n == kMaxFaces) {
-            overflow = true;
-            return false;
-        }
-        size[n++] = 0;
-        return true;
-    }
-    void push(std::uint32_t id) {
-        std::uint8_t& s = size[n - 1];
-        if (s == kMaxLoop) {
-            overflow = true;
-            return;
-        }
-        loop[n - 1][s++] = id;
-    }
-    void fail(const char* reason) {
-        if (!why) why = reason;
-    }
-};
 
 class Builder {
 public:
@@ -158,7 +120,7 @@ public:
             faces_.clear();
             collect(vh);
             std::array<std::uint32_t, 8> hex{};
-            if (const char* defect = faces_.why ? faces_.why : cube(hex)) {
+            if (const char* defect = faces_.why ? faces_.why : oriented_cube(faces_, hex)) {
                 out.errors.push_back({vh, std::string("clipped dual cell of vertex ") + std::to_string(v) + ": " + defect});
             } else {
                 out.hexes.push_back(hex);
@@ -375,83 +337,12 @@ private:
         }
     }
 
-    // Checks faces_ is an oriented combinatorial cube; fills hex (VTK order) or returns why not.
-    // The 8 dual vertices get slots 0..7 (first appearance); directed dual edges are bits of
-    // an 8x8 matrix (row = tail slot), so the checks are bit operations. The reasons and
-    // their precedence are those of a plain list check: per face (quad, repeated vertex,
-    // more than 8 vertices), then fewer than 8, an edge walked twice, an edge in one face,
-    // degree above / below 3, connectivity, the cube's vertical edges.
-    const char* cube(std::array<std::uint32_t, 8>& hex) const {
-        if (faces_.n != 6) return faces_.n < 6 ? "fewer than 6 dual faces" : "more than 6 dual faces";
-        std::array<std::uint32_t, 8> verts{};
-        std::size_t nverts = 0;
-        std::array<std::array<std::uint8_t, 4>, 6> slots{};
-        for (std::size_t i = 0; i < 6; ++i) {
-            if (faces_.size[i] != 4) return "a dual face that is not a quadrilateral";
-            const auto& q = faces_.loop[i];
-            for (std::size_t j = 0; j < 4; ++j) {
-                for (std::size_t l = j + 1; l < 4; ++l)
-                    if (q[j] == q[l]) return "a dual face repeats a vertex";
-                std::size_t s = 0;
-                while (s < nverts && verts[s] != q[j]) ++s;
-                if (s == nverts) {
-                    if (nverts == 8) return "more than 8 dual vertices";
-                    verts[nverts++] = q[j];
-                }
-                slots[i][j] = static_cast<std::uint8_t>(s);
-            }
-        }
-        if (nverts != 8) return "fewer than 8 dual vertices";
-        std::array<std::uint8_t, 8> out{};  // out[a] bit b: directed edge a -> b
-        bool twice = false;
-        for (std::size_t i = 0; i < 6; ++i)
-            for (std::size_t j = 0; j < 4; ++j) {
-                const std::uint8_t a = slots[i][j], b = slots[i][(j + 1) % 4];
-                const auto bit = static_cast<std::uint8_t>(1U << b);
-                if (out[a] & bit) twice = true;
-                out[a] |= bit;
-            }
-        if (twice) return "a dual edge walked twice in the same direction (faces not consistently oriented)";
-        for (std::size_t a = 0; a < 8; ++a)
-            for (std::size_t b = 0; b < 8; ++b)
-                if ((out[a] >> b & 1U) && !(out[b] >> a & 1U)) return "a dual edge in only one dual face";
-        // 24 directed = 12 edges, each in two faces with opposite orientations; degree 3 each.
-        bool below = false;
-        for (std::uint8_t row : out) {
-            const int d = bits8(row);
-            if (d > 3) return "a dual vertex of degree above 3";
-            below = below || d < 3;
-        }
-        if (below) return "a dual vertex of degree below 3";
-        // Connected (V - E + F = 2 then makes it a sphere, the cube).
-        unsigned seen = 1, frontier = 1;
-        while (frontier) {
-            unsigned next = 0;
-            for (std::size_t s = 0; s < 8; ++s)
-                if (frontier & (1U << s)) next |= out[s];
-            frontier = next & ~seen;
-            seen |= next;
-        }
-        if (seen != 0xFF) return "the dual cell is disconnected";
-        const auto& q = faces_.loop[0];
-        const auto& qs = slots[0];
-        hex = {q[0], q[3], q[2], q[1], 0, 0, 0, 0};
-        const unsigned ring = (1U << qs[0]) | (1U << qs[1]) | (1U << qs[2]) | (1U << qs[3]);
-        constexpr std::size_t kRing[4] = {0, 3, 2, 1};
-        for (std::size_t i = 0; i < 4; ++i) {
-            const unsigned rest = out[qs[kRing[i]]] & ~ring;
-            if (bits8(rest) != 1) return "the dual cell is not a cube";
-            hex[i + 4] = verts[static_cast<std::size_t>(std::countr_zero(rest))];
-        }
-        return nullptr;
-    }
-
     const CellComplex& k_;
     const Incidence& inc_;
     LatticePoint lo_, hi_;
     std::vector<std::uint8_t> vertex_planes_, face_plane_;
     std::vector<std::uint32_t> face_dual_, edge_dual_, vertex_dual_;
-    Faces faces_;
+    DualCellFaces faces_;
     struct Around {
         VertexHandle prev, next;
         bool two_cells = false;

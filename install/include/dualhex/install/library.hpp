@@ -1,10 +1,7 @@
 #pragma once
-// Loading an ElementLibrary without including schemes/element_library.hpp.
-//
-// Why: schemes/element_check.hpp and grid/leaf.hpp both define dualhex::LeafBox, so no
-// translation unit can include both the element library and the grid. Code that installs
-// into a LeafGrid (install.hpp) therefore only needs a forward-declared ElementLibrary,
-// and gets one from here.
+// Loading the element library that install() places, and its lattice unit. install.hpp
+// only forward-declares ElementLibrary, so a pipeline that installs needs this header, not
+// the whole schemes/element_library.hpp.
 #include <cstdint>
 #include <filesystem>
 #include <memory>

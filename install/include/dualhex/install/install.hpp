@@ -23,11 +23,10 @@
 #include "dualhex/grid/neighbours.hpp"
 #include "dualhex/schemes/placement.hpp"
 #include "dualhex/topology/cell_complex.hpp"
-#include "dualhex/topology/validation.hpp"
 
 namespace dualhex {
 
-class ElementLibrary;  // dualhex/checkers/library.hpp loads one without the LeafBox clash
+class ElementLibrary;  // dualhex/install/library.hpp loads one
 
 enum class OutsideRoot { Coarse, Mirror };
 
@@ -72,27 +71,6 @@ struct InstallResult {
 /// a rule exception or an unknown element becomes an InstallError naming the leaf.
 [[nodiscard]] InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const ElementLibrary& library,
                                     const InstallOptions& options = {});
-
-/// The checks of an installed grid: validate (every interior check), plus open faces
-/// (faces in one cell off the root cube's surface: holes where placed elements do not
-/// match, which validate alone would take for boundary; their vertices and edges are
-/// valence-checked and violations added to `validation`), the dual and the histograms.
-struct InstallVerification {
-    ValidationReport validation;
-    std::size_t open_faces = 0;
-    std::size_t interior_vertices = 0, hexes = 0;
-    std::map<int, std::size_t> face_sizes, dual_edge_valences;
-    [[nodiscard]] bool ok() const { return validation.ok() && open_faces == 0 && hexes == interior_vertices; }
-    [[nodiscard]] std::string summary() const;
-};
-[[nodiscard]] InstallVerification verify_installation(const InstallResult& installed);
-
-/// The contexts of all leaves (fast: fine octant cubes are scattered to the application
-/// points they can reach). Does not check pairing/balance. contexts[n] is leaf n's.
-[[nodiscard]] std::vector<LeafContext> leaf_contexts(const LeafGrid& grid, OutsideRoot outside = OutsideRoot::Coarse);
-
-/// One leaf's context by direct queries (reference implementation for tests).
-[[nodiscard]] LeafContext leaf_context(const LeafGrid& grid, std::size_t leaf, OutsideRoot outside = OutsideRoot::Coarse);
 
 /// The paired + balanced check install() applies (ok() = installable).
 struct InstallCheck {

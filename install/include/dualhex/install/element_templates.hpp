@@ -1,5 +1,7 @@
 #pragma once
-// Internal: placed-element templates and their emission into a ComplexBuilder.
+// Placed-element templates and their emission into a ComplexBuilder: the welding step of
+// install(), shared with the checkers' torus and window assemblies (namespace detail: an
+// implementation interface, not for pipeline authors).
 //
 // A template is one element moved by one world symmetry about the origin (library
 // `instance`, so reflections keep cells outward-oriented), its coordinates rescaled to the
@@ -7,22 +9,17 @@
 // leaves of U/2 stay integral). Emission adds the template's points once (translated,
 // scaled, optionally wrapped) and its cells as loops of those vertices: the builder welds
 // by exact keys and deduplicates shared faces.
-//
-// No schemes/element_library.hpp here: its LeafBox collides with grid/leaf.hpp's, so a
-// translation unit can include one or the other (install.cpp includes the grid).
 #include <array>
 #include <cstdint>
+#include <deque>
+#include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
-#include <deque>
 #include <vector>
 
 #include "dualhex/schemes/placement.hpp"
 #include "dualhex/topology/complex_builder.hpp"
-#include "dualhex/topology/incidence.hpp"
-#include "dualhex/topology/validation.hpp"
-#include <sstream>
-#include <span>
 
 namespace dualhex {
 class ElementLibrary;
@@ -157,48 +154,6 @@ std::optional<Placement> emit_rule_leaf(ComplexBuilder& builder, TemplateCache& 
     const ElementTemplate& t = cache.placed(cache.element_index(placement->element), world_symmetry(context, *placement));
     emit(builder, t, origin, size / cache.unit(), wrap, vertices, loop, halffaces);
     return placement;
-}
-
-/// Boundary faces (one cell) that do not lie on the domain's boundary are holes:
-/// `validate` treats them as boundary, so their vertices/edges escape the interior checks.
-/// Checks those vertices (6 edges) and edges (4 cells) that `accept` admits, adding
-/// VertexValence / EdgeCellCount violations to `report`. Returns the number of open faces.
-template <class Accept, class OnBoundary>
-std::size_t check_open_faces(const CellComplex& cx, const Incidence& inc, Accept&& accept,
-                             OnBoundary&& on_domain_boundary, ValidationReport& report) {
-    std::size_t open = 0;
-    std::vector<char> hole_vertex(cx.n_vertices(), 0), hole_edge(cx.n_edges(), 0);
-    for (std::size_t f = 0; f < cx.n_faces(); ++f) {
-        const FaceHandle fh(f);
-        if (!inc.is_boundary(fh)) continue;
-        const auto loop = cx.face_vertices(fh);
-        const bool expected = on_domain_boundary(cx, loop);
-        if (expected) continue;
-        ++open;
-        for (VertexHandle v : loop) hole_vertex[v.index()] = 1;
-        for (EdgeHandle e : cx.face_edges(fh)) hole_edge[e.index()] = 1;
-    }
-    for (std::size_t v = 0; v < cx.n_vertices(); ++v) {
-        const VertexHandle vh(v);
-        if (!hole_vertex[v] || !accept(cx.position(vh))) continue;
-        if (const std::size_t n = inc.vertex_edges(vh).size(); n != 6) {
-            std::ostringstream os;
-            os << "vertex " << v << " at " << cx.position(vh) << " (on an open face) has " << n << " edges, expected 6";
-            report.add({ViolationKind::VertexValence, vh, {}, {}, {}, os.str()});
-        }
-    }
-    for (std::size_t e = 0; e < cx.n_edges(); ++e) {
-        const EdgeHandle eh(e);
-        const auto& ends = cx.edge_vertices(eh);
-        if (!hole_edge[e] || !accept(cx.position(ends[0])) || !accept(cx.position(ends[1]))) continue;
-        if (const std::size_t n = inc.edge_cells(eh).size(); n != 4) {
-            std::ostringstream os;
-            os << "edge " << e << " " << cx.position(ends[0]) << "-" << cx.position(ends[1]) << " (on an open face) has "
-               << n << " cells, expected 4";
-            report.add({ViolationKind::EdgeCellCount, {}, eh, {}, {}, os.str()});
-        }
-    }
-    return open;
 }
 
 }  // namespace dualhex::detail

@@ -1,9 +1,8 @@
-#include "assembly.hpp"
+#include "dualhex/install/element_templates.hpp"
 
 #include <numeric>
 #include <stdexcept>
 
-#include "dualhex/checkers/library.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/topology/primitives.hpp"
 
@@ -79,17 +78,3 @@ void check_placement_symmetry(const Placement& placement) {
 }
 
 }  // namespace dualhex::detail
-
-namespace dualhex {
-
-std::shared_ptr<const ElementLibrary> load_element_library(const std::filesystem::path& directory) {
-    return std::make_shared<const ElementLibrary>(ElementLibrary::load(directory));
-}
-
-std::shared_ptr<const ElementLibrary> load_default_element_library() {
-    return std::make_shared<const ElementLibrary>(ElementLibrary::load_default());
-}
-
-std::int64_t lattice_unit(const ElementLibrary& library) { return detail::common_unit(library); }
-
-}  // namespace dualhex

@@ -1,5 +1,4 @@
-// Checkers: installation into real grids (LeafGrid). No schemes/element_library.hpp here:
-// its LeafBox clashes with the grid's (see dualhex/checkers/library.hpp).
+// The install layer: installation into real grids (LeafGrid).
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -7,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "dualhex/checkers/install.hpp"
-#include "dualhex/checkers/library.hpp"
+#include "dualhex/install.hpp"
+#include "dualhex/install/library.hpp"
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/grid/predicates.hpp"
 #include "dualhex/grid/refinement.hpp"

@@ -1,0 +1,91 @@
+// The surface-to-hex-mesh pipeline (mesh_pipeline.hpp): the stages in order, each timed.
+#include "dualhex/mesher/mesh_pipeline.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "dualhex/grid/refinement.hpp"
+#include "dualhex/mesher/extract.hpp"
+#include "dualhex/mesher/install_stage.hpp"
+#include "dualhex/mesher/project.hpp"
+#include "dualhex/mesher/smooth.hpp"
+#include "dualhex/mesher/untangle.hpp"
+
+namespace dualhex::mesher {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Runs one named stage: reports its name, times it into `ms`, returns what it returns.
+template <class Stage>
+auto timed(const MeshPipelineOptions& options, const char* name, double& ms, Stage&& stage) {
+    if (options.progress) options.progress(name);
+    const auto t0 = Clock::now();
+    struct Stop {
+        Clock::time_point t0;
+        double& ms;
+        ~Stop() { ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+    } stop{t0, ms};
+    return stage();
+}
+
+void check_options(const MeshPipelineOptions& options) {
+    if (options.max_depth < 1 || options.max_depth > 12)
+        throw std::invalid_argument("max depth must be in [1, 12], got " + std::to_string(options.max_depth));
+    if (options.smooth_iterations < 0) throw std::invalid_argument("smoothing iterations must be >= 0");
+}
+
+}  // namespace
+
+MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions& options) {
+    check_options(options);
+    MeshPipelineResult result;
+    MeshTimes& ms = result.ms;
+
+    geometry::SurfaceOctreeOptions octree_options;
+    octree_options.max_depth = options.max_depth;
+    geometry::SurfaceOctree octree =
+        timed(options, "octree", ms.octree, [&] { return geometry::surface_octree(tree, octree_options); });
+    result.root = octree.root;
+    const LeafGrid balanced = timed(options, "balance", ms.balance, [&] { return balance(octree.grid, options.balance); });
+    const LeafGrid grid = timed(options, "pair", ms.pair, [&] { return pair(balanced, options.balance); });
+    ms.balance_pair = ms.balance + ms.pair;
+    result.leaves = grid.size();
+
+    const InstallResult installed =
+        timed(options, "install", ms.install, [&] { return install_schemes(grid, options.balance); });
+    result.cells = installed.complex.n_cells();
+    (void)timed(options, "verify", ms.verify, [&] { return require_verified(installed); });
+    const ClippedDual dual = timed(options, "dual", ms.dual, [&] { return root_clipped_dual(installed); });
+    result.dual_hexes = dual.hexes.size();
+    result.dual_edge_valences = clipped_dual_edge_valences(dual);
+
+    HexMesh& mesh = result.mesh;
+    mesh = timed(options, "extract", ms.extract,
+                 [&] { return extract_inside(dual, root_extent(installed), octree.root, tree); });
+    if (mesh.hexes.empty()) throw std::runtime_error("no hex centroid inside the surface (max depth too small?)");
+
+    QualityState state;
+    const BoundaryProjection projection = timed(options, "project", ms.project, [&] {
+        BoundaryProjection p = project_boundary(mesh, tree);
+        state = quality_state(mesh);
+        return p;
+    });
+    result.boundary_vertices = projection.boundary_vertices;
+    result.inverted_after_projection = state.inverted;
+    result.smooth_iterations_done = timed(options, "smooth", ms.smooth, [&] {
+        return smooth_interior(mesh, projection.on_boundary, options.smooth_iterations, state);
+    });
+    result.untangled_vertices = timed(options, "untangle", ms.untangle, [&] {
+        return untangle_towards(mesh, projection.unprojected, options.untangle_rounds, options.untangle_below, state);
+    });
+
+    timed(options, "report", ms.report, [&] {
+        result.quality = geometry::summarize(state.scaled_jacobian);
+        result.singular_edge_valences = interior_singular_edge_valences(mesh);
+        result.hausdorff = geometry::boundary_to_surface_distance(mesh, tree);
+    });
+    return result;
+}
+
+}  // namespace dualhex::mesher
