@@ -5,11 +5,11 @@
 #include <stdexcept>
 
 #include "dualhex/grid/refinement.hpp"
-#include "dualhex/mesher/extract.hpp"
+#include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/mesher/install_stage.hpp"
-#include "dualhex/mesher/project.hpp"
+#include "dualhex/mesher/select_core.hpp"
 #include "dualhex/mesher/smooth.hpp"
-#include "dualhex/mesher/untangle.hpp"
+#include "dualhex/mesher/surface_smooth.hpp"
 
 namespace dualhex::mesher {
 namespace {
@@ -61,29 +61,46 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     result.dual_edge_valences = clipped_dual_edge_valences(dual);
 
     HexMesh& mesh = result.mesh;
-    mesh = timed(options, "extract", ms.extract,
-                 [&] { return extract_inside(dual, root_extent(installed), octree.root, tree); });
-    if (mesh.hexes.empty()) throw std::runtime_error("no hex centroid inside the surface (max depth too small?)");
+    result.core = timed(options, "core", ms.core, [&] {
+        const EmbeddedDual embedded = embed_dual(dual, root_extent(installed), octree.root, tree);
+        return select_core(dual, embedded, geometry::surface_topology(tree.surface()).size(), options.core);
+    });
+    if (result.core.mesh.hexes.empty())
+        throw std::runtime_error("the core is empty: no dual hex lies well inside the surface (max depth too small?)");
+    result.core_hexes = result.core.mesh.hexes.size();
 
     QualityState state;
-    const BoundaryProjection projection = timed(options, "project", ms.project, [&] {
-        BoundaryProjection p = project_boundary(mesh, tree);
+    timed(options, "pad", ms.pad, [&] {
+        PadResult padded = pad_layer(result.core.mesh, tree, options.pad);
+        result.core.mesh = {};
+        mesh = std::move(padded.mesh);
+        result.constraints = std::move(padded.constraints);
+        result.pad_hexes = padded.pad_hexes;
+        result.boundary_vertices = padded.surface_vertices;
+        result.padded_by_ray = padded.by_ray;
+        result.padded_by_closest_point = padded.by_closest_point;
         state = quality_state(mesh);
-        return p;
     });
-    result.boundary_vertices = projection.boundary_vertices;
-    result.inverted_after_projection = state.inverted;
-    result.smooth_iterations_done = timed(options, "smooth", ms.smooth, [&] {
-        return smooth_interior(mesh, projection.on_boundary, options.smooth_iterations, state);
+    result.inverted_after_pad = state.inverted;
+
+    const FeatureCurves curves;  // the features stage will provide them
+    const VertexDomain domain{tree, curves, result.constraints};
+    timed(options, "smooth", ms.smooth, [&] {
+        result.surface_smooth_iterations_done = smooth_surface(mesh, domain, options.smooth_iterations, state);
+        std::vector<char> fixed(mesh.points.size());
+        for (std::size_t v = 0; v < fixed.size(); ++v) fixed[v] = result.constraints.role[v] != VertexRole::Interior;
+        result.smooth_iterations_done = smooth_interior(mesh, fixed, options.smooth_iterations, state);
     });
-    result.untangled_vertices = timed(options, "untangle", ms.untangle, [&] {
-        return untangle_towards(mesh, projection.unprojected, options.untangle_rounds, options.untangle_below, state);
+    result.optimise = timed(options, "optimise", ms.optimise, [&] {
+        return optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
     });
+    result.topology = timed(options, "check", ms.check, [&] { return check_topology(mesh, tree.surface()); });
 
     timed(options, "report", ms.report, [&] {
         result.quality = geometry::summarize(state.scaled_jacobian);
         result.singular_edge_valences = interior_singular_edge_valences(mesh);
         result.hausdorff = geometry::boundary_to_surface_distance(mesh, tree);
+        result.distance = geometry::surface_distance(mesh, tree);
     });
     return result;
 }

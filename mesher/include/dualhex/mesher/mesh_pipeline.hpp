@@ -9,16 +9,18 @@
 //   install    install_stage.hpp install_schemes      paired grid -> installed complex (WeakRule / StrongRule)
 //   verify     install_stage.hpp require_verified     must pass (a bug otherwise)
 //   dual       install_stage.hpp root_clipped_dual    -> clipped dual, one hex per primal vertex (exact)
-//   extract    extract.hpp extract_inside             -> embedded hexes whose centroid is inside
-//   project    project.hpp project_boundary           boundary quads' vertices -> closest surface points
-//   smooth     smooth.hpp smooth_interior             Laplacian of interior vertices, never more inverted
-//   untangle   untangle.hpp untangle_towards          bad hexes' vertices pulled back towards the dual
+//   core       select_core.hpp select_core            -> dual hexes well inside, manifold-repaired, components
+//   pad        pad.hpp pad_layer                      -> core + one hex layer whose outer vertices are on the surface
+//   smooth     surface_smooth.hpp, smooth.hpp         surface vertices along the surface, interior Laplacian
+//   optimise   optimise.hpp optimise_mesh             untangle, then raise the minimum scaled Jacobian
+//   check      check_topology.hpp check_topology      boundary manifold, components and Euler = the input's
 //   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance
 //
 // Writing the file is the caller's job (geometry::write_hex_mesh); MeshTimes::write is left 0.
+// A failed topology check is not an exception: result.topology says so (the CLI exits 1).
 // Errors: std::invalid_argument for bad options, std::runtime_error if the installation
-// does not verify, the clipped dual has a non-cube cell (bugs, never bad input) or no hex
-// centroid is inside the surface.
+// does not verify, the clipped dual has a non-cube cell (bugs, never bad input) or the
+// core is empty (no dual hex well inside the surface: max depth too small).
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -31,7 +33,13 @@
 #include "dualhex/geometry/surface_octree.hpp"
 #include "dualhex/grid/neighbours.hpp"
 #include "dualhex/mesher/default_shape.hpp"
+#include "dualhex/mesher/check_topology.hpp"
+#include "dualhex/mesher/constrained_position.hpp"
 #include "dualhex/mesher/mesh_report.hpp"
+#include "dualhex/mesher/optimise.hpp"
+#include "dualhex/mesher/pad.hpp"
+#include "dualhex/mesher/core_selection.hpp"
+#include "dualhex/geometry/surface_distance.hpp"
 #include "dualhex/mesher/quality_state.hpp"
 
 namespace dualhex::mesher {
@@ -46,9 +54,10 @@ using geometry::TriangleSurface;
 struct MeshPipelineOptions {
     Balance balance = Balance::Weak;
     int max_depth = 6;
-    int smooth_iterations = 5;
-    int untangle_rounds = 10;
-    double untangle_below = 0.05;
+    int smooth_iterations = 5;          ///< interior Laplacian and surface smoothing iterations (each)
+    CoreOptions core;
+    PadOptions pad;
+    OptimiseOptions optimise;           ///< optimise.min_quality: the target minimum scaled Jacobian
     /// Called with a short stage name ("octree", "pair", ...) before each stage (may be empty).
     std::function<void(const std::string&)> progress;
 };
@@ -56,25 +65,32 @@ struct MeshPipelineOptions {
 /// Milliseconds per stage. balance_pair = balance + pair: the balanced grid first, then the
 /// least paired and balanced refinement of it (the same grid as pairing the octree directly).
 struct MeshTimes {
-    double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, extract = 0,
-           project = 0, smooth = 0, untangle = 0, report = 0, write = 0;
+    double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, core = 0, pad = 0,
+           smooth = 0, optimise = 0, check = 0, report = 0, write = 0;
 };
 
 struct MeshPipelineResult {
-    HexMesh mesh;                         ///< the kept, projected, smoothed hexes (VTK order)
+    HexMesh mesh;                         ///< core + pad, smoothed, optimised (VTK order)
+    VertexConstraints constraints;        ///< (mesh points) the roles the moving stages honoured
     RootCube root;
     std::size_t leaves = 0;               ///< paired, balanced grid
     std::size_t cells = 0;                ///< cells of the installed complex
     std::size_t dual_hexes = 0;           ///< hexes of the clipped dual (whole root cube)
     std::map<int, std::size_t> dual_edge_valences;  ///< of the whole clipped dual
-    std::size_t boundary_vertices = 0;    ///< projected vertices
-    std::size_t inverted_after_projection = 0;
-    int smooth_iterations_done = 0;       ///< accepted Laplacian iterations
-    std::size_t untangled_vertices = 0;   ///< vertex moves back (sum over rounds)
+    CoreSelection core;                   ///< the core stage's figures (core.mesh is moved into mesh)
+    std::size_t core_hexes = 0, pad_hexes = 0;
+    std::size_t boundary_vertices = 0;    ///< on the surface (the pad's outer vertices)
+    std::size_t padded_by_ray = 0, padded_by_closest_point = 0;
+    std::size_t inverted_after_pad = 0;
+    int smooth_iterations_done = 0;       ///< accepted interior Laplacian iterations
+    int surface_smooth_iterations_done = 0;
+    OptimiseResult optimise;
+    TopologyCheck topology;
     QualitySummary quality;
     /// Interior edges (not on a boundary quad) of the kept mesh with != 4 hexes: valence -> count.
     std::map<int, std::size_t> singular_edge_valences;
-    HausdorffResult hausdorff;
+    HausdorffResult hausdorff;            ///< one-sided, sampled (the older figure)
+    geometry::SurfaceDistance distance;   ///< two-sided (surface_distance.hpp)
     MeshTimes ms;
 };
 
