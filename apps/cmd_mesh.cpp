@@ -25,7 +25,7 @@ namespace {
 struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int max_depth = 6, smooth = 5;
-    double min_quality = 0.3;
+    double min_quality = 0.3, core_margin = 0.1, thickness_factor = 0.25, optimise_ms = 10000;
     bool json = false, force = false, accept_topology_change = false;
 };
 
@@ -57,6 +57,9 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.max_depth = opt.max_depth;
     options.smooth_iterations = opt.smooth;
     options.optimise.min_quality = opt.min_quality;
+    options.core.margin = opt.core_margin;
+    options.optimise.time_limit_ms = opt.optimise_ms;
+    options.thickness_factor = opt.thickness_factor;
     if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
     mesher::MeshPipelineResult r = mesher::mesh_surface(tree, options);
 
@@ -192,6 +195,14 @@ void register_mesh(CLI::App& app) {
     sub->add_option("--min-quality", opt->min_quality,
                     "Target minimum scaled Jacobian of the optimiser (default 0.3): optimise until reached or no progress")
         ->check(CLI::Range(0.0, 1.0));
+    sub->add_option("--core-margin", opt->core_margin,
+                    "Core hexes have all corners at least this times their mean edge inside the surface (default 0.1)")
+        ->check(CLI::Range(0.0, 2.0));
+    sub->add_option("--thickness-factor", opt->thickness_factor,
+                    "Octree: refine surface cells larger than this times the local thickness (default 0.25)")
+        ->check(CLI::Range(0.01, 10.0));
+    sub->add_option("--optimise-ms", opt->optimise_ms, "Time bound of the optimiser, checked between sweeps (default 10000)")
+        ->check(CLI::Range(0.0, 1e7));
     sub->add_flag("--accept-topology-change", opt->accept_topology_change,
                   "Exit 0 even if the boundary's components or Euler characteristics differ from the input's");
     add_json_flag(*sub, opt->json);

@@ -32,6 +32,8 @@ auto timed(const MeshPipelineOptions& options, const char* name, double& ms, Sta
 void check_options(const MeshPipelineOptions& options) {
     if (options.max_depth < 1 || options.max_depth > 12)
         throw std::invalid_argument("max depth must be in [1, 12], got " + std::to_string(options.max_depth));
+    if (!(options.thickness_factor > 0)) throw std::invalid_argument("thickness factor must be > 0");
+    if (!(options.core.margin >= 0)) throw std::invalid_argument("core margin must be >= 0");
     if (options.smooth_iterations < 0) throw std::invalid_argument("smoothing iterations must be >= 0");
 }
 
@@ -44,6 +46,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
 
     geometry::SurfaceOctreeOptions octree_options;
     octree_options.max_depth = options.max_depth;
+    octree_options.thickness_factor = options.thickness_factor;
     geometry::SurfaceOctree octree =
         timed(options, "octree", ms.octree, [&] { return geometry::surface_octree(tree, octree_options); });
     result.root = octree.root;

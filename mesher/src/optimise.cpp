@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "dualhex/geometry/quality.hpp"
+#include "dualhex/mesher/quality_state.hpp"
 #include "optimise_detail.hpp"
 
 namespace dualhex::mesher {
@@ -72,16 +75,44 @@ double local_energy(const OptimiseContext& c, const BarrierEnergy& e, std::size_
     return sum;
 }
 
-// One backtracking gradient step of v on its local energy; true if it moved.
+// The Newton direction of v's local energy at x: H d = -g, H by forward differences of
+// the analytic gradient (symmetrised), shifted until positive definite; the gradient
+// direction if that fails.
+Eigen::Vector3d newton_direction(const OptimiseContext& c, const BarrierEnergy& e, std::size_t v,
+                                 const Eigen::Vector3d& x, const Eigen::Vector3d& g, double size) {
+    const double delta = 1e-5 * size;
+    Eigen::Matrix3d H;
+    for (int a = 0; a < 3; ++a) {
+        Eigen::Vector3d y = x, ga;
+        y[a] += delta;
+        (void)local_energy(c, e, v, y, &ga);
+        H.col(a) = (ga - g) / delta;
+    }
+    H = 0.5 * (H + H.transpose()).eval();
+    double shift = 0;
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        const Eigen::LLT<Eigen::Matrix3d> llt(H + shift * Eigen::Matrix3d::Identity());
+        if (llt.info() == Eigen::Success) return llt.solve(-g);
+        shift = shift == 0 ? 1e-6 * H.diagonal().cwiseAbs().maxCoeff() + 1e-12 : shift * 10;
+    }
+    return -g;
+}
+
+// One damped Newton step of v on its local energy (restricted to v's domain, at most one
+// local size long, halved until the energy decreases); true if v moved.
 bool energy_step(OptimiseContext& c, const BarrierEnergy& e, std::size_t v) {
     const Eigen::Vector3d x = c.mesh.points[v];
     Eigen::Vector3d g;
     const double e0 = local_energy(c, e, v, x, &g);
-    const Eigen::Vector3d d = c.domain.restrict(v, x, -g);
-    if (!(d.norm() > 0)) return false;
-    double step = 0.5 * local_size(c, e, v);
-    for (int halving = 0; halving < 12; ++halving, step *= 0.5) {
-        const Eigen::Vector3d y = c.domain.project(v, x + step * d.normalized(), x);
+    const double size = local_size(c, e, v);
+    if (!(g.norm() > 0)) return false;
+    Eigen::Vector3d d = c.domain.restrict(v, x, newton_direction(c, e, v, x, g, size));
+    if (!(d.dot(g) < 0)) d = c.domain.restrict(v, x, -g);  // not a descent direction: the gradient
+    const double len = d.norm();
+    if (!(len > 0)) return false;
+    if (len > size) d *= size / len;
+    for (int halving = 0; halving < 12; ++halving, d *= 0.5) {
+        const Eigen::Vector3d y = c.domain.project(v, x + d, x);
         if (local_energy(c, e, v, y, nullptr) < e0) {
             move_vertex(c, v, y);
             return true;
@@ -110,17 +141,21 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
     double min_det = 0;
     double e_prev = totals(min_det);
     energy.eps = min_det < 0 ? 2 * std::sqrt(0.1 * (0.1 - min_det)) : 1e-3;
-    int sweep = 0;
+    constexpr int kStallSweeps = 25;
+    std::size_t best_inverted = count_inverted(c.sj);
+    int best_sweep = 0, sweep = 0;
     while (sweep < max_sweeps && !c.out_of_time()) {
         for (std::size_t v : vertices) (void)energy_step(c, energy, v);
         ++sweep;
         const double e = totals(min_det);
-        const bool untangled = std::none_of(vertices.begin(), vertices.end(), [&](std::size_t v) {
-            for (std::size_t i = c.incidence.start[v]; i < c.incidence.start[v + 1]; ++i)
-                if (!(c.sj[static_cast<std::size_t>(c.incidence.hex[i])] > 0)) return true;
-            return false;
-        });
-        if (untangled) break;
+        const std::size_t inverted = count_inverted(c.sj);
+        if (inverted == 0) break;
+        if (inverted < best_inverted) {
+            best_inverted = inverted;
+            best_sweep = sweep;
+        } else if (sweep - best_sweep >= kStallSweeps) {
+            break;  // no fewer inverted hexes for a while: leave the rest to phase 2
+        }
         // The paper's eps update: follow the energy decrease, stay ahead of the worst det.
         const double sigma = std::max(1.0 - e / e_prev, 0.1);
         const double mu = (1 - sigma) * chi(min_det, energy.eps);

@@ -9,7 +9,7 @@
 namespace dualhex::mesher {
 
 struct CoreOptions {
-    double margin = 0.3;  ///< corners at >= margin * (mean edge of the hex) inside the surface
+    double margin = 0.1;  ///< corners at >= margin * (mean edge of the hex) inside the surface
 };
 
 struct CoreSelection {

@@ -54,6 +54,9 @@ using geometry::TriangleSurface;
 struct MeshPipelineOptions {
     Balance balance = Balance::Weak;
     int max_depth = 6;
+    /// Octree: split a surface cell while its edge exceeds this times the local thickness
+    /// (geometry/surface_octree.hpp); smaller gives more hexes across thin parts.
+    double thickness_factor = 0.25;
     int smooth_iterations = 5;          ///< interior Laplacian and surface smoothing iterations (each)
     CoreOptions core;
     PadOptions pad;

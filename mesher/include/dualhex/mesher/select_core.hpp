@@ -8,9 +8,11 @@
 // the surface (> 0 inside; |s| = closest-point distance, sign by is_inside). Per dual
 // hex: h = the mean of its 12 edge lengths, score = min over its 8 corners of s - margin * h.
 // A hex is selected iff score > 0: all 8 corners inside, at least margin * h from the
-// surface, so every pad hex is at least margin * h thick (margin = 0.3 by default: a
-// pad hex's height lies in about [0.3 h, 1.3 h], the layer between two level sets one
-// hex apart). The same score drives manifold_repair (geometry/manifold_repair.hpp), so
+// surface, so every pad hex is at least margin * h thick (margin = 0.1 by default: a
+// pad hex's height lies in about [0.1 h, 1.1 h + the rest of the gap]; a larger margin
+// gives thicker pad hexes but drops thin parts of the solid, whose missing core then
+// changes the topology — 0.1 with the pipeline's thickness factor 0.25 kept the topology
+// on more of the shared models than 0.3 with 0.5). The same score drives manifold_repair (geometry/manifold_repair.hpp), so
 // the repair adds the hexes closest to qualifying and removes the least inside ones.
 //
 // Components: face-connected classes of the repaired selection, by decreasing size. The

@@ -8,10 +8,11 @@
 namespace dualhex::mesher {
 
 /// In: the mesh, its domain (roles: only Surface vertices move), `iterations`, its quality
-/// state. Each iteration moves every Surface vertex half-way to the mean of its
-/// boundary-edge neighbours, in the tangent plane, then onto the surface; an iteration
-/// that increases the inverted count is undone and ends the stage. Out: mesh and state
-/// after the accepted iterations; returns their number.
+/// state. Each iteration visits every Surface vertex (Gauss-Seidel) and moves it half-way
+/// to the mean of its boundary-edge neighbours, in the tangent plane, then onto the
+/// surface; a move that increases the number of inverted hexes at the vertex is refused,
+/// so the inverted count never grows. Stops early when an iteration moves nothing. Out:
+/// mesh and state; returns the iterations done.
 int smooth_surface(geometry::HexMesh& mesh, const VertexDomain& domain, int iterations, QualityState& state);
 
 }  // namespace dualhex::mesher
