@@ -26,3 +26,7 @@ endif()
 add_test(NAME mesh_gmsh_readback
          COMMAND ${_dualhex_python3} ${CMAKE_CURRENT_SOURCE_DIR}/mesh_gmsh_readback.py
                  $<TARGET_FILE:dualhex> ${CMAKE_CURRENT_BINARY_DIR}/mesh_gmsh_readback ${DUALHEX_SHARED_DATA})
+
+# the mesher's core, pad, optimise and check stages on hand-made meshes
+dualhex_add_test(test_mesher_optimise SOURCES test_mesher_optimise.cpp DEPS dualhex::mesher)
+dualhex_add_test(test_mesher_pad SOURCES test_mesher_pad.cpp DEPS dualhex::mesher)

@@ -49,7 +49,7 @@ TEST_F(MeshCli, DefaultShapeJsonReport) {
                             "hausdorff", "ms"})
         EXPECT_TRUE(j.contains(key)) << key;
     for (const char* key : {"min", "mean", "below_0", "below_0_2"}) EXPECT_TRUE(j.at("scaled_jacobian").contains(key)) << key;
-    for (const char* key : {"octree", "balance_pair", "install", "dual", "extract", "project", "smooth", "write"})
+    for (const char* key : {"octree", "balance_pair", "install", "dual", "core", "pad", "smooth", "optimise", "check", "write"})
         EXPECT_TRUE(j.at("ms").contains(key)) << key;
     EXPECT_GT(j.at("hexes").get<int>(), 0);
     EXPECT_GT(j.at("scaled_jacobian").at("min").get<double>(), 0.0);
