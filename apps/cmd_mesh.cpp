@@ -61,7 +61,13 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.optimise.time_limit_ms = opt.optimise_ms;
     options.thickness_factor = opt.thickness_factor;
     if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
-    mesher::MeshPipelineResult r = mesher::mesh_surface(tree, options);
+    mesher::MeshPipelineResult r;
+    try {
+        r = mesher::mesh_surface(tree, options);
+    } catch (const mesher::EmptyCoreError& e) {
+        std::cerr << "error: " << input_name << ": " << e.what() << '\n';
+        throw Exit{kInputError};
+    }
 
     if (progress) std::cerr << "  write...\n";
     const auto t0 = std::chrono::steady_clock::now();
@@ -126,6 +132,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                     {"scaled_jacobian",
                      {{"min", q.min}, {"mean", q.mean}, {"below_0", q.share_negative}, {"below_0_2", q.share_below_02}}},
                     {"singular_edge_valences", histogram_json(r.singular_edge_valences)},
+                    {"core_singular_edge_valences", histogram_json(r.core.singular_edge_valences)},
                     {"hausdorff", r.hausdorff.max},
                     {"hausdorff_mean", r.hausdorff.mean},
                     {"ms",
@@ -159,7 +166,9 @@ void run_mesh(const MeshOptionsCli& opt) {
                     t.manifold ? "manifold" : "NOT manifold", t.components(), t.input_components(),
                     t.matches ? ", matches the input" : ", DIFFERS from the input");
         for (const auto& p : t.problems) std::printf("  %s\n", p.c_str());
-        std::printf("singular edges:   %s (interior, valence: count)\n", histogram_text(r.singular_edge_valences).c_str());
+        std::printf("singular edges:   %s (interior, valence: count); core interior: %s\n",
+                    histogram_text(r.singular_edge_valences).c_str(),
+                    histogram_text(r.core.singular_edge_valences).c_str());
         std::printf("surface distance: two-sided mean %.3g, max %.3g (of the bbox diagonal); %.2f%% vertices on it\n",
                     d.relative(d.mean()), d.relative(d.max()), 100 * d.share_vertices_on_surface);
         std::printf("time (ms):        octree %.1f, balance+pair %.1f, install %.1f, verify %.1f, dual %.1f, "

@@ -66,10 +66,12 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     HexMesh& mesh = result.mesh;
     result.core = timed(options, "core", ms.core, [&] {
         const EmbeddedDual embedded = embed_dual(dual, root_extent(installed), octree.root, tree);
-        return select_core(dual, embedded, geometry::surface_topology(tree.surface()).size(), options.core);
+        CoreSelection core = select_core(dual, embedded, geometry::surface_topology(tree.surface()).size(), options.core);
+        core.singular_edge_valences = interior_singular_edge_valences(core.mesh);
+        return core;
     });
     if (result.core.mesh.hexes.empty())
-        throw std::runtime_error("the core is empty: no dual hex lies well inside the surface (max depth too small?)");
+        throw EmptyCoreError("the core is empty: no dual hex lies well inside the surface (max depth too small?)");
     result.core_hexes = result.core.mesh.hexes.size();
 
     QualityState state;

@@ -2,6 +2,8 @@
 // The select-core stage's options and result (select_core.hpp), without the clipped dual's
 // headers, so that the pipeline's header can carry them.
 #include <cstddef>
+#include <map>
+#include <stdexcept>
 #include <vector>
 
 #include "dualhex/geometry/hex_output.hpp"
@@ -20,6 +22,16 @@ struct CoreSelection {
     std::size_t repair_remaining_defects = 0;  ///< non-manifold edges + vertices left
     std::vector<std::size_t> kept_components;     ///< hexes per kept component, decreasing
     std::vector<std::size_t> dropped_components;  ///< hexes per dropped component, decreasing
+    /// Interior edges of the core (not on its boundary) with != 4 hexes: valence -> count.
+    /// The pad leaves them as they are (the schemes' valences).
+    std::map<int, std::size_t> singular_edge_valences;
+};
+
+/// Thrown by the pipeline when no dual hex qualifies for the core: the surface is too thin
+/// for the octree's resolution (a larger max depth or a smaller thickness factor may help).
+class EmptyCoreError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
 };
 
 }  // namespace dualhex::mesher

@@ -20,7 +20,7 @@
 // A failed topology check is not an exception: result.topology says so (the CLI exits 1).
 // Errors: std::invalid_argument for bad options, std::runtime_error if the installation
 // does not verify, the clipped dual has a non-cube cell (bugs, never bad input) or the
-// core is empty (no dual hex well inside the surface: max depth too small).
+// core is empty (EmptyCoreError, a runtime_error: no dual hex well inside the surface).
 #include <cstddef>
 #include <functional>
 #include <map>
