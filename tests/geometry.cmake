@@ -19,3 +19,8 @@ dualhex_add_test(test_geometry_quality SOURCES test_geometry_quality.cpp DEPS du
 dualhex_add_test(test_geometry_hex_topology SOURCES test_geometry_hex_topology.cpp DEPS dualhex::geometry)
 dualhex_add_test(test_geometry_manifold_repair SOURCES test_geometry_manifold_repair.cpp DEPS dualhex::geometry)
 dualhex_add_test(test_geometry_surface_distance SOURCES test_geometry_surface_distance.cpp DEPS dualhex::geometry)
+if(TARGET mesh_quality)  # the independent benchmark's measurements (built with DUALHEX_BUILD_BENCH)
+  dualhex_add_test(test_bench_mesh_quality SOURCES test_bench_mesh_quality.cpp DEPS dualhex::geometry)
+  target_compile_definitions(test_bench_mesh_quality PRIVATE MESH_QUALITY_EXE="$<TARGET_FILE:mesh_quality>")
+  add_dependencies(test_bench_mesh_quality mesh_quality)
+endif()

@@ -46,7 +46,8 @@ TEST(HexTopology, FaceTableIsOutwardAndCoversEachEdgeTwice) {
     }
     std::sort(edges.begin(), edges.end());
     for (const auto& e : kHexEdgeCorners)
-        EXPECT_EQ(std::count(edges.begin(), edges.end(), std::pair<int, int>(std::min(e[0], e[1]), std::max(e[0], e[1]))), 2)
+        EXPECT_EQ(
+            std::count(edges.begin(), edges.end(), std::pair<int, int>(std::min(e[0], e[1]), std::max(e[0], e[1]))), 2)
             << e[0] << '-' << e[1];
     EXPECT_EQ(edges.size(), 24u);
 }
@@ -186,10 +187,12 @@ TEST(SurfaceTopology, ComparisonOfMeshAndSurface) {
     const auto cube = surface_topology(unit_cube_surface());
     const auto same = compare_topology(ring.boundary_components, torus);
     EXPECT_TRUE(same.same) << same.describe();
+    EXPECT_TRUE(compare_topology(ring, default_shape()).same);
+    EXPECT_FALSE(compare_topology(ring, unit_cube_surface()).same);
     const auto differ = compare_topology(ring.boundary_components, cube);
     EXPECT_FALSE(differ.same);
     EXPECT_EQ(differ.describe(), "boundary chi {0} vs surface chi {2} (differ)");
-    const auto hollow = check_hex_topology(
-        pick(hex_block(3, 3, 3), [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }));
+    const auto hollow =
+        check_hex_topology(pick(hex_block(3, 3, 3), [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }));
     EXPECT_FALSE(compare_topology(hollow.boundary_components, cube).same);  // {2, 2} vs {2}
 }

@@ -50,7 +50,7 @@ TEST(SurfaceDistance, HalfCoveredSurfaceIsFarOnlyTwoSided) {
     for (const auto& p : other.vertices) two.vertices.push_back(p);
     for (const auto& t : other.triangles) two.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
     const AabbTree tree(two);
-    const HexMesh mesh = hex_block(2, 2, 2, 0.5).mesh;  // only the first cube
+    const HexMesh mesh = hex_block(2, 2, 2, 0.5).mesh;             // only the first cube
     EXPECT_EQ(boundary_to_surface_distance(mesh, tree).max, 0.0);  // the one-sided report sees nothing
     const auto d = surface_distance(mesh, tree);
     EXPECT_LT(d.mesh_to_surface.max, 1e-12);

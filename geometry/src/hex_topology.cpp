@@ -87,7 +87,8 @@ void check_boundary_edges(BoundaryDefects& out) {
     std::vector<std::pair<std::uint64_t, int>> directed;  // (key, +1 if walked low -> high)
     directed.reserve(out.quads.size() * 4);
     for (const auto& q : out.quads)
-        for (int i = 0; i < 4; ++i) directed.emplace_back(edge_key(q[i], q[(i + 1) % 4]), q[i] < q[(i + 1) % 4] ? 1 : -1);
+        for (int i = 0; i < 4; ++i)
+            directed.emplace_back(edge_key(q[i], q[(i + 1) % 4]), q[i] < q[(i + 1) % 4] ? 1 : -1);
     std::sort(directed.begin(), directed.end());
     for (std::size_t i = 0; i < directed.size();) {
         std::size_t j = i;
@@ -96,8 +97,10 @@ void check_boundary_edges(BoundaryDefects& out) {
         const int a = static_cast<int>(directed[i].first >> 32), b = static_cast<int>(directed[i].first & 0xffffffffu);
         const int n = static_cast<int>(j - i);
         ++out.boundary_edges;
-        if (n != 2) out.non_manifold_edges.push_back({a, b, n});
-        else if (direction != 0) out.misoriented_edges.push_back({a, b});
+        if (n != 2)
+            out.non_manifold_edges.push_back({a, b, n});
+        else if (direction != 0)
+            out.misoriented_edges.push_back({a, b});
         i = j;
     }
 }
@@ -157,7 +160,8 @@ BoundaryDefects boundary_defects(const std::vector<std::array<int, 8>>& hexes, s
         const auto& u = uses[i];
         std::array<int, 4> q{};
         for (int c = 0; c < 4; ++c) q[c] = hexes[u.hex][kHexFaces[u.face][c]];
-        if (j - i == 1) out.quads.push_back(q);
+        if (j - i == 1)
+            out.quads.push_back(q);
         else if (j - i > 2 || uses[i].reversed == uses[i + 1].reversed)
             out.face_defects.push_back({q, static_cast<int>(j - i)});
     });
@@ -263,7 +267,8 @@ HexTopology check_hex_topology(const HexMesh& mesh, std::size_t max_listed) {
     for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
         if (!(scaled_jacobian(mesh, h) > 0)) {
             if (t.inverted_hexes++ < max_listed)
-                t.first_inverted_hexes.push_back(locate(mesh, std::vector<int>(mesh.hexes[h].begin(), mesh.hexes[h].end()), 0));
+                t.first_inverted_hexes.push_back(
+                    locate(mesh, std::vector<int>(mesh.hexes[h].begin(), mesh.hexes[h].end()), 0));
         }
     t.hexes_per_component = hex_component_sizes(mesh.hexes);
     t.hex_components = t.hexes_per_component.size();
@@ -274,8 +279,8 @@ HexTopology check_hex_topology(const HexMesh& mesh, std::size_t max_listed) {
 std::string HexTopology::summary() const {
     std::ostringstream s;
     s << hexes << " hexes, " << hex_components << " face-connected components; boundary: " << boundary_quads
-      << " quads, " << boundary_edges << " edges, " << boundary_vertices << " vertices, "
-      << boundary_components.size() << " components, chi";
+      << " quads, " << boundary_edges << " edges, " << boundary_vertices << " vertices, " << boundary_components.size()
+      << " components, chi";
     for (const auto& c : boundary_components) s << ' ' << c.euler();
     s << "\nnon-manifold edges " << non_manifold_edges << ", misoriented edges " << misoriented_edges
       << ", non-manifold vertices " << non_manifold_vertices << ", face defects " << face_defects
@@ -311,13 +316,18 @@ TopologyComparison compare_topology(const std::vector<SurfaceComponent>& mesh_bo
     return c;
 }
 
+TopologyComparison compare_topology(const HexTopology& mesh, const TriangleSurface& surface) {
+    return compare_topology(mesh.boundary_components, surface_topology(surface));
+}
+
 std::string TopologyComparison::describe() const {
     const auto set = [](const std::vector<std::int64_t>& v) {
         std::string s = "{";
         for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]);
         return s + "}";
     };
-    return "boundary chi " + set(mesh_euler) + " vs surface chi " + set(surface_euler) + (same ? " (same)" : " (differ)");
+    return "boundary chi " + set(mesh_euler) + " vs surface chi " + set(surface_euler) +
+           (same ? " (same)" : " (differ)");
 }
 
 }  // namespace dualhex::geometry

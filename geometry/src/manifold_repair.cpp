@@ -25,8 +25,9 @@ struct VertexCells {
         // a cell listing a vertex twice (degenerate) appears twice: harmless, deduplicated below
     }
     [[nodiscard]] std::vector<std::size_t> at(int v) const {
-        std::vector<std::size_t> out(cells.begin() + static_cast<std::ptrdiff_t>(start[static_cast<std::size_t>(v)]),
-                                     cells.begin() + static_cast<std::ptrdiff_t>(start[static_cast<std::size_t>(v) + 1]));
+        std::vector<std::size_t> out(
+            cells.begin() + static_cast<std::ptrdiff_t>(start[static_cast<std::size_t>(v)]),
+            cells.begin() + static_cast<std::ptrdiff_t>(start[static_cast<std::size_t>(v) + 1]));
         out.erase(std::unique(out.begin(), out.end()), out.end());  // ascending by construction
         return out;
     }
@@ -128,7 +129,12 @@ ManifoldRepairResult repair_manifold_selection(const std::vector<std::array<int,
                                                std::vector<char> selected, const std::vector<double>& score,
                                                const ManifoldRepairOptions& options) {
     check_input(cells, vertex_count, selected, score);
-    Repair repair{cells, score, options, VertexCells(cells, vertex_count), {}, std::vector<char>(cells.size(), 0),
+    Repair repair{cells,
+                  score,
+                  options,
+                  VertexCells(cells, vertex_count),
+                  {},
+                  std::vector<char>(cells.size(), 0),
                   std::vector<int>(cells.size(), -1)};
     for (auto& s : selected) s = s != 0;
     repair.result.selected = std::move(selected);

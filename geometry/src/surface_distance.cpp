@@ -59,7 +59,8 @@ TriangleSurface boundary_triangles(const HexMesh& mesh) {
 
 SurfaceDistance surface_distance(const HexMesh& mesh, const AabbTree& surface, const SurfaceDistanceOptions& options) {
     if (!(options.sample_spacing > 0) || options.max_subdivisions < 1 || !(options.on_surface_tolerance >= 0))
-        throw std::invalid_argument("surface distance: sample spacing must be > 0, max subdivisions >= 1, tolerance >= 0");
+        throw std::invalid_argument(
+            "surface distance: sample spacing must be > 0, max subdivisions >= 1, tolerance >= 0");
     TriangleSurface boundary = boundary_triangles(mesh);
     if (boundary.triangles.empty()) throw std::invalid_argument("surface distance: the hex mesh has no boundary quads");
     SurfaceDistance r;

@@ -76,14 +76,14 @@ struct FaceDefect {
 
 /// Exact boundary structure of a set of hexes (every defect listed, ids sorted).
 struct BoundaryDefects {
-    std::vector<std::array<int, 4>> quads;         ///< boundary quads, outward, in key order
+    std::vector<std::array<int, 4>> quads;  ///< boundary quads, outward, in key order
     std::size_t boundary_edges = 0;
     std::size_t boundary_vertices = 0;
-    std::vector<EdgeDefect> non_manifold_edges;    ///< in != 2 boundary quads
+    std::vector<EdgeDefect> non_manifold_edges;         ///< in != 2 boundary quads
     std::vector<std::array<int, 2>> misoriented_edges;  ///< 2 quads, same direction
-    std::vector<int> non_manifold_vertices;        ///< link not one cycle
-    std::vector<FaceDefect> face_defects;          ///< in >= 3 hexes, or 2 same direction
-    std::vector<std::size_t> degenerate_hexes;     ///< a vertex id repeated in the hex
+    std::vector<int> non_manifold_vertices;             ///< link not one cycle
+    std::vector<FaceDefect> face_defects;               ///< in >= 3 hexes, or 2 same direction
+    std::vector<std::size_t> degenerate_hexes;          ///< a vertex id repeated in the hex
     [[nodiscard]] bool manifold() const {
         return non_manifold_edges.empty() && misoriented_edges.empty() && non_manifold_vertices.empty() &&
                face_defects.empty() && degenerate_hexes.empty();
@@ -91,8 +91,7 @@ struct BoundaryDefects {
 };
 
 /// The boundary quads and all boundary defects of `hexes` (ids in [0, vertex_count)).
-[[nodiscard]] BoundaryDefects boundary_defects(const std::vector<std::array<int, 8>>& hexes,
-                                               std::size_t vertex_count);
+[[nodiscard]] BoundaryDefects boundary_defects(const std::vector<std::array<int, 8>>& hexes, std::size_t vertex_count);
 
 /// One connected piece of a quad or triangle surface and its Euler characteristic.
 struct SurfaceComponent {
@@ -107,7 +106,7 @@ struct SurfaceComponent {
 struct DefectLocation {
     std::vector<int> vertices;
     std::vector<Eigen::Vector3d> points;
-    int count = 0;  ///< edges: boundary quads at it; faces: hexes at it; else 0
+    int count = 0;                               ///< edges: boundary quads at it; faces: hexes at it; else 0
     [[nodiscard]] std::string describe() const;  ///< "vertices 3-7 at (0 0 1)-(1 0 1) (4 quads)"
 };
 
@@ -116,7 +115,7 @@ struct HexTopology {
     std::size_t non_manifold_edges = 0, misoriented_edges = 0, non_manifold_vertices = 0;
     std::size_t face_defects = 0, degenerate_hexes = 0, inverted_hexes = 0;
     std::size_t hex_components = 0;
-    std::vector<std::size_t> hexes_per_component;  ///< decreasing
+    std::vector<std::size_t> hexes_per_component;       ///< decreasing
     std::vector<SurfaceComponent> boundary_components;  ///< by decreasing face count
     /// The first `max_listed` of each kind (inverted: one vertex list per hex, its 8 ids).
     std::vector<DefectLocation> first_non_manifold_edges, first_misoriented_edges, first_non_manifold_vertices,
@@ -124,8 +123,8 @@ struct HexTopology {
     /// Boundary edge- and vertex-manifold, consistently oriented, no face defect, no
     /// degenerate or inverted hex.
     [[nodiscard]] bool valid() const {
-        return non_manifold_edges == 0 && misoriented_edges == 0 && non_manifold_vertices == 0 &&
-               face_defects == 0 && degenerate_hexes == 0 && inverted_hexes == 0;
+        return non_manifold_edges == 0 && misoriented_edges == 0 && non_manifold_vertices == 0 && face_defects == 0 &&
+               degenerate_hexes == 0 && inverted_hexes == 0;
     }
     /// Multi-line human-readable summary (counts, then the listed defects).
     [[nodiscard]] std::string summary() const;
@@ -147,5 +146,7 @@ struct TopologyComparison {
 };
 [[nodiscard]] TopologyComparison compare_topology(const std::vector<SurfaceComponent>& mesh_boundary,
                                                   const std::vector<SurfaceComponent>& surface);
+/// The mesh's boundary components against those of the surface it should match.
+[[nodiscard]] TopologyComparison compare_topology(const HexTopology& mesh, const TriangleSurface& surface);
 
 }  // namespace dualhex::geometry

@@ -33,8 +33,8 @@
 namespace dualhex::geometry {
 
 struct SurfaceDistanceOptions {
-    double sample_spacing = 0.005;  ///< relative to the surface's bbox diagonal, > 0
-    int max_subdivisions = 64;      ///< per triangle edge, >= 1
+    double sample_spacing = 0.005;       ///< relative to the surface's bbox diagonal, > 0
+    int max_subdivisions = 64;           ///< per triangle edge, >= 1
     double on_surface_tolerance = 1e-6;  ///< relative to the diagonal
 };
 
@@ -46,9 +46,9 @@ struct DirectedDistance {
 };
 
 struct SurfaceDistance {
-    double diagonal = 0;                 ///< of the surface's bounding box
-    DirectedDistance mesh_to_surface;    ///< from the hex boundary
-    DirectedDistance surface_to_mesh;    ///< from the input surface
+    double diagonal = 0;               ///< of the surface's bounding box
+    DirectedDistance mesh_to_surface;  ///< from the hex boundary
+    DirectedDistance surface_to_mesh;  ///< from the input surface
     std::size_t boundary_vertices = 0;
     double share_vertices_on_surface = 0;
     [[nodiscard]] double max() const { return std::max(mesh_to_surface.max, surface_to_mesh.max); }
