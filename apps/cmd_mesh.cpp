@@ -25,7 +25,7 @@ namespace {
 struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int max_depth = 6, smooth = 5;
-    double min_quality = 0.3, core_margin = 0.1, thickness_factor = 0.25, optimise_ms = 10000;
+    double min_quality = 0.5, core_margin = 0.1, thickness_factor = 0.25, optimise_ms = 2000;
     bool json = false, force = false, accept_topology_change = false;
 };
 
@@ -128,6 +128,12 @@ void run_mesh(const MeshOptionsCli& opt) {
                     {"surface_distance",
                      {{"mean", d.relative(d.mean())},
                       {"max", d.relative(d.max())},
+                      {"mesh_to_surface_max", d.relative(d.mesh_to_surface.max)},
+                      {"surface_to_mesh_max", d.relative(d.surface_to_mesh.max)},
+                      {"mesh_to_surface_farthest",
+                       {d.mesh_to_surface.farthest.x(), d.mesh_to_surface.farthest.y(), d.mesh_to_surface.farthest.z()}},
+                      {"surface_to_mesh_farthest",
+                       {d.surface_to_mesh.farthest.x(), d.surface_to_mesh.farthest.y(), d.surface_to_mesh.farthest.z()}},
                       {"on_surface", d.share_vertices_on_surface}}},
                     {"scaled_jacobian",
                      {{"min", q.min}, {"mean", q.mean}, {"below_0", q.share_negative}, {"below_0_2", q.share_below_02}}},
@@ -202,7 +208,7 @@ void register_mesh(CLI::App& app) {
     sub->add_option("--smooth", opt->smooth, "Laplacian smoothing iterations of the interior vertices (default 5)")
         ->check(CLI::Range(0, 1000));
     sub->add_option("--min-quality", opt->min_quality,
-                    "Target minimum scaled Jacobian of the optimiser (default 0.3): optimise until reached or no progress")
+                    "Target minimum scaled Jacobian of the optimiser (default 0.5): optimise until reached or no progress")
         ->check(CLI::Range(0.0, 1.0));
     sub->add_option("--core-margin", opt->core_margin,
                     "Core hexes have all corners at least this times their mean edge inside the surface (default 0.1)")
@@ -210,7 +216,7 @@ void register_mesh(CLI::App& app) {
     sub->add_option("--thickness-factor", opt->thickness_factor,
                     "Octree: refine surface cells larger than this times the local thickness (default 0.25)")
         ->check(CLI::Range(0.01, 10.0));
-    sub->add_option("--optimise-ms", opt->optimise_ms, "Time bound of the optimiser, checked between sweeps (default 10000)")
+    sub->add_option("--optimise-ms", opt->optimise_ms, "CPU-time bound of the optimiser in ms, checked between sweeps (default 2000)")
         ->check(CLI::Range(0.0, 1e7));
     sub->add_flag("--accept-topology-change", opt->accept_topology_change,
                   "Exit 0 even if the boundary's components or Euler characteristics differ from the input's");

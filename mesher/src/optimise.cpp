@@ -176,9 +176,9 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
     const VertexDomain domain{tree, curves, constraints};
     const detail::VertexHexes incidence(mesh);
     detail::BarrierEnergy energy(mesh);
-    detail::OptimiseContext c{mesh, domain, incidence, state.scaled_jacobian,
-                              std::chrono::steady_clock::now() +
-                                  std::chrono::microseconds(static_cast<long long>(options.time_limit_ms * 1000))};
+    detail::OptimiseContext c{
+        mesh, domain, incidence, state.scaled_jacobian,
+        std::clock() + static_cast<std::clock_t>(std::min(options.time_limit_ms, 1e9) * 1e-3 * CLOCKS_PER_SEC)};
     if (state.inverted > 0) {
         const std::vector<Eigen::Vector3d> before = mesh.points;
         const std::vector<double> sj_before = state.scaled_jacobian;

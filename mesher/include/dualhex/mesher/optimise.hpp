@@ -8,7 +8,7 @@
 // Contract: the inverted count is never larger than the input's and the minimum scaled
 //         Jacobian never lower; Surface vertices end on the surface (their closest point),
 //         Curve vertices on their polyline, Corner vertices where they were. Bounded by
-//         sweeps and by time_limit_ms (checked between sweeps).
+//         sweeps and by time_limit_ms of CPU time (checked between sweeps).
 // Errors: std::invalid_argument from check_constraints.
 //
 // Phase 1, untangle (only if some hex is inverted): the barrier energy f_eps of
@@ -36,10 +36,10 @@
 namespace dualhex::mesher {
 
 struct OptimiseOptions {
-    double min_quality = 0.3;   ///< target minimum scaled Jacobian
+    double min_quality = 0.5;   ///< target minimum scaled Jacobian
     int untangle_sweeps = 200;
     int quality_sweeps = 40;
-    double time_limit_ms = 10000;
+    double time_limit_ms = 2000;  ///< process CPU time, checked between sweeps
 };
 
 struct OptimiseResult {
