@@ -25,7 +25,7 @@ namespace {
 struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int max_depth = 6, smooth = 5;
-    double min_quality = 0.5, core_margin = 0.1, thickness_factor = 0.25, optimise_ms = 2000;
+    double min_quality = 0.5, core_margin = 0.1, thickness_factor = 0.25, optimise_ms = 2000, pad_ray_limit = 2.0;
     bool json = false, force = false, accept_topology_change = false;
 };
 
@@ -59,6 +59,7 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.optimise.min_quality = opt.min_quality;
     options.core.margin = opt.core_margin;
     options.optimise.time_limit_ms = opt.optimise_ms;
+    options.pad.ray_limit = opt.pad_ray_limit;
     options.thickness_factor = opt.thickness_factor;
     if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
     mesher::MeshPipelineResult r;
@@ -218,6 +219,10 @@ void register_mesh(CLI::App& app) {
         ->check(CLI::Range(0.01, 10.0));
     sub->add_option("--optimise-ms", opt->optimise_ms, "CPU-time bound of the optimiser in ms, checked between sweeps (default 2000)")
         ->check(CLI::Range(0.0, 1e7));
+    sub->add_option("--pad-ray-limit", opt->pad_ray_limit,
+                    "Pad: an outer vertex is the normal ray's hit if it is within this times (distance + edge), else "
+                    "the closest point (default 2; 0: always the closest point)")
+        ->check(CLI::Range(0.0, 100.0));
     sub->add_flag("--accept-topology-change", opt->accept_topology_change,
                   "Exit 0 even if the boundary's components or Euler characteristics differ from the input's");
     add_json_flag(*sub, opt->json);

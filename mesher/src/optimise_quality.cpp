@@ -46,7 +46,7 @@ bool improve_vertex(OptimiseContext& c, const BarrierEnergy& e, std::size_t v) {
         const double len = directions[k].norm();
         if (!(len > 0)) continue;
         double step = first_step[k];
-        for (int halving = 0; halving < 10; ++halving, step *= 0.5) {
+        for (int halving = 0; halving < 8; ++halving, step *= 0.5) {
             const Eigen::Vector3d y = c.domain.project(v, x + (step / len) * directions[k], x);
             const LocalQuality q = local_quality(c, v, y);
             if (q.better_than(best)) {
@@ -66,6 +66,12 @@ bool improve_vertex(OptimiseContext& c, const BarrierEnergy& e, std::size_t v) {
 std::size_t quality_phase(OptimiseContext& c, BarrierEnergy& energy, double target, int max_sweeps, int& sweeps) {
     std::size_t moves = 0;
     sweeps = 0;
+    // A vertex that found no improving move is retried only after a vertex of one of its
+    // hexes moved (its local quality cannot have changed otherwise).
+    std::vector<char> dirty(c.mesh.points.size(), 1);
+    constexpr int kStallSweeps = 10;  // sweeps without a better global minimum before stopping
+    double best_min = -INFINITY;
+    int best_sweep = 0;
     while (sweeps < max_sweeps && !c.out_of_time()) {
         // The movable vertices of the hexes below target, worst hex first.
         std::vector<std::pair<double, std::size_t>> order;
@@ -81,13 +87,25 @@ std::size_t quality_phase(OptimiseContext& c, BarrierEnergy& energy, double targ
         for (std::size_t h : bad)
             for (int w : c.mesh.hexes[h]) {
                 const auto v = static_cast<std::size_t>(w);
-                if (seen[v] || c.domain.role(v) == VertexRole::Corner) continue;
+                if (seen[v] || !dirty[v] || c.domain.role(v) == VertexRole::Corner) continue;
                 seen[v] = 1;
-                if (improve_vertex(c, energy, v)) ++moved;
+                dirty[v] = 0;
+                if (!improve_vertex(c, energy, v)) continue;
+                ++moved;
+                for (std::size_t i = c.incidence.start[v]; i < c.incidence.start[v + 1]; ++i)
+                    for (int u : c.mesh.hexes[static_cast<std::size_t>(c.incidence.hex[i])]) dirty[static_cast<std::size_t>(u)] = 1;
             }
         ++sweeps;
         moves += moved;
         if (moved == 0) break;
+        double min = INFINITY;
+        for (double q : c.sj) min = std::min(min, std::isnan(q) ? -1.0 : q);
+        if (min > best_min + 1e-4) {
+            best_min = min;
+            best_sweep = sweeps;
+        } else if (sweeps - best_sweep >= kStallSweeps) {
+            break;
+        }
     }
     return moves;
 }

@@ -24,7 +24,9 @@
 // of the local minimum scaled Jacobian, towards the mean of its hexes' centroids) with
 // step halving; the best is taken only if it lowers the number of inverted hexes at the
 // vertex, or keeps it and raises their minimum scaled Jacobian. So no sweep can break the
-// contract. Stops when the minimum reaches min_quality or a sweep moves nothing.
+// contract. A vertex is retried only after a vertex of one of its hexes moved. Stops when
+// the minimum reaches min_quality, a sweep moves nothing, or 10 sweeps in a row did not
+// raise the minimum by 1e-4.
 #include <cstddef>
 
 #include "dualhex/geometry/aabb_tree.hpp"
@@ -38,7 +40,7 @@ namespace dualhex::mesher {
 struct OptimiseOptions {
     double min_quality = 0.5;   ///< target minimum scaled Jacobian
     int untangle_sweeps = 200;
-    int quality_sweeps = 40;
+    int quality_sweeps = 100;
     double time_limit_ms = 2000;  ///< process CPU time, checked between sweeps
 };
 
