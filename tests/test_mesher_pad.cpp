@@ -118,6 +118,9 @@ TEST(MesherCheck, RingAgainstABoxFailsOnTheEulerCharacteristic) {
     EXPECT_EQ(t.input_euler, (std::vector<std::int64_t>{2}));
     ASSERT_EQ(t.problems.size(), 1u);
     EXPECT_NE(t.problems.front().find("differs"), std::string::npos) << t.problems.front();
+    // located: the ring's one boundary component, its 32 quads and bounding box
+    EXPECT_NE(t.problems.front().find("component 1: 32 quads in (0 0 0)-(3 3 1)"), std::string::npos)
+        << t.problems.front();
 }
 
 TEST(MesherCheck, MissingComponentFails) {

@@ -7,7 +7,8 @@
 //         (`manifold`), its components and per-component Euler characteristic, the
 //         input's, and `matches` = manifold and the same multiset of Euler
 //         characteristics (so the same number of components). On a mismatch or a
-//         defect, `problems` names it with locations (vertex ids and coordinates).
+//         defect, `problems` names it with locations (vertex ids and coordinates; for a
+//         topology mismatch, each boundary component's quad count and bounding box).
 // It never changes the mesh; the CLI turns !matches into exit 1 unless told to accept.
 #include <cstddef>
 #include <cstdint>
