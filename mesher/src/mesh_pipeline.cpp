@@ -84,6 +84,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         result.boundary_vertices = padded.surface_vertices;
         result.padded_by_ray = padded.by_ray;
         result.padded_by_closest_point = padded.by_closest_point;
+        result.padded_switched = padded.switched;
         state = quality_state(mesh);
     });
     result.inverted_after_pad = state.inverted;

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "dualhex/geometry/hex_topology.hpp"
+#include "dualhex/geometry/quality.hpp"
+#include "hex_energy.hpp"
 
 namespace dualhex::mesher {
 namespace {
@@ -52,6 +54,38 @@ BoundaryFrame boundary_frame(const geometry::HexMesh& core, const Quads& quads, 
     return f;
 }
 
+std::size_t inverted_at(const geometry::HexMesh& mesh, const detail::VertexHexes& hexes, std::size_t v) {
+    std::size_t n = 0;
+    for (std::size_t i = hexes.start[v]; i < hexes.start[v + 1]; ++i)
+        n += geometry::scaled_jacobian(mesh, static_cast<std::size_t>(hexes.hex[i])) > 0 ? 0 : 1;
+    return n;
+}
+
+// Each outer point has two surface candidates (the ray's hit and the closest point); at
+// the points of inverted hexes, take the other one where that inverts fewer hexes there.
+// Returns the number of points switched.
+std::size_t switch_candidates(geometry::HexMesh& mesh, std::size_t first_outer,
+                              std::vector<Eigen::Vector3d>& other) {
+    const detail::VertexHexes hexes(mesh);
+    std::size_t switched = 0;
+    for (int round = 0; round < 3; ++round) {
+        std::size_t this_round = 0;
+        for (std::size_t v = first_outer; v < mesh.points.size(); ++v) {
+            const std::size_t before = inverted_at(mesh, hexes, v);
+            if (before == 0 || other[v - first_outer] == mesh.points[v]) continue;
+            std::swap(mesh.points[v], other[v - first_outer]);
+            if (inverted_at(mesh, hexes, v) < before) {
+                ++this_round;
+            } else {
+                std::swap(mesh.points[v], other[v - first_outer]);
+            }
+        }
+        switched += this_round;
+        if (this_round == 0) break;
+    }
+    return switched;
+}
+
 }  // namespace
 
 PadResult pad_layer(const geometry::HexMesh& core, const geometry::AabbTree& tree, const PadOptions& options) {
@@ -64,6 +98,7 @@ PadResult pad_layer(const geometry::HexMesh& core, const geometry::AabbTree& tre
     out.core_points = core.points.size();
     out.core_hexes = core.hexes.size();
     std::vector<int> image(core.points.size(), -1);
+    std::vector<Eigen::Vector3d> other;  // (outer points): the candidate not taken
     for (const auto& q : boundary.quads)
         for (int c : q) image[static_cast<std::size_t>(c)] = 0;
     for (std::size_t v = 0; v < core.points.size(); ++v) {
@@ -75,9 +110,11 @@ PadResult pad_layer(const geometry::HexMesh& core, const geometry::AabbTree& tre
         image[v] = static_cast<int>(out.mesh.points.size());
         if (hit && hit->t <= limit) {
             out.mesh.points.push_back(hit->point);
+            other.push_back(closest.point);
             ++out.by_ray;
         } else {
             out.mesh.points.push_back(closest.point);
+            other.push_back(hit ? hit->point : closest.point);
             ++out.by_closest_point;
         }
     }
@@ -90,6 +127,7 @@ PadResult pad_layer(const geometry::HexMesh& core, const geometry::AabbTree& tre
         out.mesh.hexes.push_back(h);
     }
     out.pad_hexes = boundary.quads.size();
+    out.switched = switch_candidates(out.mesh, out.core_points, other);
     out.surface_vertices = out.mesh.points.size() - out.core_points;
     out.constraints = VertexConstraints::interior(out.mesh.points.size());
     for (std::size_t v = out.core_points; v < out.mesh.points.size(); ++v) out.constraints.role[v] = VertexRole::Surface;

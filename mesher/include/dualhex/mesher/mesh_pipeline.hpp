@@ -83,7 +83,7 @@ struct MeshPipelineResult {
     CoreSelection core;                   ///< the core stage's figures (core.mesh is moved into mesh)
     std::size_t core_hexes = 0, pad_hexes = 0;
     std::size_t boundary_vertices = 0;    ///< on the surface (the pad's outer vertices)
-    std::size_t padded_by_ray = 0, padded_by_closest_point = 0;
+    std::size_t padded_by_ray = 0, padded_by_closest_point = 0, padded_switched = 0;
     std::size_t inverted_after_pad = 0;
     int smooth_iterations_done = 0;       ///< accepted interior Laplacian iterations
     int surface_smooth_iterations_done = 0;

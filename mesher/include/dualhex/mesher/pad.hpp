@@ -19,7 +19,9 @@
 // normals towards the surface's): v' is the first surface hit of the ray v + t n when
 // t <= ray_limit * (d + h) (d: v's distance to the surface, h: the mean length of v's
 // boundary edges), else the closest surface point of v (a concave spot, where the ray may
-// run far). Either way v' is on the surface.
+// run far). Either way v' is on the surface. Then, at the outer points of inverted pad
+// hexes, the other candidate (closest point / ray hit) is taken where it inverts fewer
+// hexes at that point (up to 3 rounds).
 #include <cstddef>
 
 #include "dualhex/geometry/aabb_tree.hpp"
@@ -38,7 +40,8 @@ struct PadResult {
     VertexConstraints constraints;  ///< (points): Surface for the new points
     std::size_t core_points = 0, core_hexes = 0;
     std::size_t pad_hexes = 0, surface_vertices = 0;
-    std::size_t by_ray = 0, by_closest_point = 0;  ///< how the surface points were placed
+    std::size_t by_ray = 0, by_closest_point = 0;  ///< how the surface points were first placed
+    std::size_t switched = 0;  ///< then switched to the other candidate (fewer inverted hexes there)
 };
 
 /// Throws std::invalid_argument if the core has no boundary quad.
