@@ -37,6 +37,36 @@ void check_options(const MeshPipelineOptions& options) {
     if (options.smooth_iterations < 0) throw std::invalid_argument("smoothing iterations must be >= 0");
 }
 
+// Stage "core": the dual embedded, the core chosen and its interior valences counted.
+CoreSelection core_stage(const ClippedDual& dual, const InstallResult& installed, const RootCube& root,
+                         const AabbTree& tree, const CoreOptions& options) {
+    const EmbeddedDual embedded = embed_dual(dual, root_extent(installed), root, tree);
+    CoreSelection core = select_core(dual, embedded, geometry::surface_topology(tree.surface()).size(), options);
+    core.singular_edge_valences = interior_singular_edge_valences(core.mesh);
+    return core;
+}
+
+// Stage "pad": result.core.mesh padded into result.mesh, with its roles and figures.
+void pad_stage(MeshPipelineResult& result, const AabbTree& tree, const PadOptions& options) {
+    PadResult padded = pad_layer(result.core.mesh, tree, options);
+    result.core.mesh = {};
+    result.mesh = std::move(padded.mesh);
+    result.constraints = std::move(padded.constraints);
+    result.pad_hexes = padded.pad_hexes;
+    result.boundary_vertices = padded.surface_vertices;
+    result.padded_by_ray = padded.by_ray;
+    result.padded_by_closest_point = padded.by_closest_point;
+    result.padded_switched = padded.switched;
+}
+
+// Stage "smooth": surface vertices along the surface, then the interior Laplacian.
+void smooth_stage(MeshPipelineResult& result, const VertexDomain& domain, int iterations, QualityState& state) {
+    result.surface_smooth_iterations_done = smooth_surface(result.mesh, domain, iterations, state);
+    std::vector<char> fixed(result.mesh.points.size());
+    for (std::size_t v = 0; v < fixed.size(); ++v) fixed[v] = result.constraints.role[v] != VertexRole::Interior;
+    result.smooth_iterations_done = smooth_interior(result.mesh, fixed, iterations, state);
+}
+
 }  // namespace
 
 MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions& options) {
@@ -63,40 +93,23 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     result.dual_hexes = dual.hexes.size();
     result.dual_edge_valences = clipped_dual_edge_valences(dual);
 
-    HexMesh& mesh = result.mesh;
-    result.core = timed(options, "core", ms.core, [&] {
-        const EmbeddedDual embedded = embed_dual(dual, root_extent(installed), octree.root, tree);
-        CoreSelection core = select_core(dual, embedded, geometry::surface_topology(tree.surface()).size(), options.core);
-        core.singular_edge_valences = interior_singular_edge_valences(core.mesh);
-        return core;
-    });
+    result.core = timed(options, "core", ms.core,
+                        [&] { return core_stage(dual, installed, octree.root, tree, options.core); });
     if (result.core.mesh.hexes.empty())
         throw EmptyCoreError("the core is empty: no dual hex lies well inside the surface (max depth too small?)");
     result.core_hexes = result.core.mesh.hexes.size();
 
     QualityState state;
     timed(options, "pad", ms.pad, [&] {
-        PadResult padded = pad_layer(result.core.mesh, tree, options.pad);
-        result.core.mesh = {};
-        mesh = std::move(padded.mesh);
-        result.constraints = std::move(padded.constraints);
-        result.pad_hexes = padded.pad_hexes;
-        result.boundary_vertices = padded.surface_vertices;
-        result.padded_by_ray = padded.by_ray;
-        result.padded_by_closest_point = padded.by_closest_point;
-        result.padded_switched = padded.switched;
-        state = quality_state(mesh);
+        pad_stage(result, tree, options.pad);
+        state = quality_state(result.mesh);
     });
     result.inverted_after_pad = state.inverted;
 
     const FeatureCurves curves;  // the features stage will provide them
     const VertexDomain domain{tree, curves, result.constraints};
-    timed(options, "smooth", ms.smooth, [&] {
-        result.surface_smooth_iterations_done = smooth_surface(mesh, domain, options.smooth_iterations, state);
-        std::vector<char> fixed(mesh.points.size());
-        for (std::size_t v = 0; v < fixed.size(); ++v) fixed[v] = result.constraints.role[v] != VertexRole::Interior;
-        result.smooth_iterations_done = smooth_interior(mesh, fixed, options.smooth_iterations, state);
-    });
+    timed(options, "smooth", ms.smooth, [&] { smooth_stage(result, domain, options.smooth_iterations, state); });
+    HexMesh& mesh = result.mesh;
     result.optimise = timed(options, "optimise", ms.optimise, [&] {
         return optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
     });
