@@ -10,7 +10,11 @@
 #include "dualhex/geometry/aabb_tree.hpp"
 #include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/geometry/quality.hpp"
+#include "dualhex/geometry/inside.hpp"
+#include "dualhex/geometry/surface_octree.hpp"
 #include "dualhex/mesher/check_topology.hpp"
+#include "dualhex/mesher/default_shape.hpp"
+#include "dualhex/mesher/install_stage.hpp"
 #include "dualhex/mesher/pad.hpp"
 #include "dualhex/mesher/select_core.hpp"
 #include "test_geometry_fixture.hpp"
@@ -133,4 +137,32 @@ TEST(MesherCheck, MissingComponentFails) {
     EXPECT_FALSE(t.matches);
     EXPECT_EQ(t.components(), 1u);
     EXPECT_EQ(t.input_components(), 2u);
+}
+
+// The signs spread along dual edges agree with the ray test at every dual point, and the
+// core rule holds for every selected hex of the real dual of the default torus.
+TEST(MesherCore, EmbeddedSignsAgreeWithTheRayTest) {
+    const geometry::AabbTree tree(default_shape());
+    geometry::SurfaceOctreeOptions octree_options;
+    octree_options.max_depth = 4;
+    octree_options.thickness_factor = 0.25;
+    const geometry::SurfaceOctree octree = geometry::paired_surface_octree(tree, Balance::Weak, octree_options);
+    const InstallResult installed = install_schemes(octree.grid, Balance::Weak);
+    const ClippedDual dual = root_clipped_dual(installed);
+    const EmbeddedDual e = embed_dual(dual, root_extent(installed), octree.root, tree);
+    ASSERT_EQ(e.points.size(), dual.points.size());
+    std::size_t inside = 0;
+    for (std::size_t i = 0; i < e.points.size(); ++i) {
+        const bool ray = geometry::is_inside(tree, e.points[i]);
+        EXPECT_EQ(e.signed_distance[i] > 0, ray) << i;
+        EXPECT_NEAR(std::abs(e.signed_distance[i]), std::sqrt(tree.squared_distance(e.points[i])), 1e-15);
+        inside += ray ? 1 : 0;
+    }
+    EXPECT_GT(inside, 0u);
+    const CoreSelection core = select_core(dual, e, 1);
+    EXPECT_GT(core.selected_by_rule, 0u);
+    EXPECT_TRUE(core.repair_manifold);
+    EXPECT_EQ(core.kept_components.size(), 1u);
+    const TopologyCheck t = check_topology(core.mesh, tree.surface());
+    EXPECT_TRUE(t.matches) << (t.problems.empty() ? "" : t.problems.front());
 }

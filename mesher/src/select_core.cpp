@@ -31,16 +31,42 @@ double mean_edge(const std::array<std::uint32_t, 8>& h, const std::vector<Eigen:
 EmbeddedDual embed_dual(const ClippedDual& dual, std::int64_t extent, const geometry::RootCube& root,
                         const geometry::AabbTree& tree) {
     const double ext = static_cast<double>(extent);
+    const std::size_t n = dual.points.size();
     EmbeddedDual out;
-    out.points.reserve(dual.points.size());
-    out.signed_distance.reserve(dual.points.size());
+    out.points.reserve(n);
+    out.signed_distance.reserve(n);
     for (const RationalPoint& rp : dual.points) {
         const Eigen::Vector3d p =
             root.origin + root.size * Eigen::Vector3d(rp.coordinate(0, ext), rp.coordinate(1, ext), rp.coordinate(2, ext));
-        const double d = std::sqrt(tree.squared_distance(p));
         out.points.push_back(p);
-        out.signed_distance.push_back(geometry::is_inside(tree, p) ? d : -d);
+        out.signed_distance.push_back(std::sqrt(tree.squared_distance(p)));
     }
+    // Signs: a ray-parity test at one point per region, then spread along dual edges: if
+    // |p - q| < d(p), the segment pq stays in the open ball around p that the surface does
+    // not meet, so q is on p's side.
+    std::vector<std::vector<std::uint32_t>> neighbours(n);
+    for (const auto& h : dual.hexes)
+        for (const auto& e : geometry::kHexEdgeCorners) {
+            neighbours[h[static_cast<std::size_t>(e[0])]].push_back(h[static_cast<std::size_t>(e[1])]);
+            neighbours[h[static_cast<std::size_t>(e[1])]].push_back(h[static_cast<std::size_t>(e[0])]);
+        }
+    std::vector<signed char> sign(n, 0);
+    std::vector<std::uint32_t> stack;
+    for (std::size_t start = 0; start < n; ++start) {
+        if (sign[start] != 0) continue;
+        sign[start] = geometry::is_inside(tree, out.points[start]) ? 1 : -1;
+        stack.assign(1, static_cast<std::uint32_t>(start));
+        while (!stack.empty()) {
+            const std::uint32_t p = stack.back();
+            stack.pop_back();
+            for (std::uint32_t q : neighbours[p])
+                if (sign[q] == 0 && (out.points[q] - out.points[p]).norm() < 0.999 * out.signed_distance[p]) {
+                    sign[q] = sign[p];
+                    stack.push_back(q);
+                }
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) out.signed_distance[i] *= sign[i];
     return out;
 }
 

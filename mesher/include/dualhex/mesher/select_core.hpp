@@ -41,6 +41,8 @@
 namespace dualhex::mesher {
 
 /// Signed distance (> 0 inside) of every embedded dual point; the points (N, 3) as embedded.
+/// The sign is is_inside's at one point per region and spread exactly along dual edges
+/// shorter than the distance (no surface between), so few points cast rays.
 struct EmbeddedDual {
     std::vector<Eigen::Vector3d> points;  ///< (dual points)
     std::vector<double> signed_distance;  ///< (dual points)
