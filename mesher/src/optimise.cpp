@@ -127,7 +127,8 @@ double chi(double d, double eps) { return 0.5 * (d + std::sqrt(eps * eps + d * d
 
 int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
     std::vector<char> hex_active;
-    const std::vector<std::size_t> vertices = near_inverted(c, 2, hex_active);
+    int rings = 2;
+    std::vector<std::size_t> vertices = near_inverted(c, rings, hex_active);
     auto totals = [&](double& min_det) {
         double sum = 0;
         min_det = INFINITY;
@@ -141,7 +142,7 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
     double min_det = 0;
     double e_prev = totals(min_det);
     energy.eps = min_det < 0 ? 2 * std::sqrt(0.1 * (0.1 - min_det)) : 1e-3;
-    constexpr int kStallSweeps = 25;
+    constexpr int kStallSweeps = 25, kMaxRings = 4;
     std::size_t best_inverted = count_inverted(c.sj);
     int best_sweep = 0, sweep = 0;
     while (sweep < max_sweeps && !c.out_of_time()) {
@@ -154,7 +155,13 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
             best_inverted = inverted;
             best_sweep = sweep;
         } else if (sweep - best_sweep >= kStallSweeps) {
-            break;  // no fewer inverted hexes for a while: leave the rest to phase 2
+            if (rings >= kMaxRings) break;  // no fewer inverted hexes for a while: leave the rest to phase 2
+            // Stalled: free a wider region around what is still inverted, start a new eps schedule.
+            vertices = near_inverted(c, ++rings, hex_active);
+            best_sweep = sweep;
+            e_prev = totals(min_det);
+            energy.eps = 2 * std::sqrt(0.1 * (0.1 - std::min(min_det, 0.0)));
+            continue;
         }
         // The paper's eps update: follow the energy decrease, stay ahead of the worst det.
         const double sigma = std::max(1.0 - e / e_prev, 0.1);

@@ -16,8 +16,9 @@
 // near an inverted one (2 vertex rings), minimised by Gauss-Seidel sweeps of per-vertex
 // gradient steps (restricted to the vertex's domain, backtracking until the local energy
 // decreases); after each sweep eps is decreased by the paper's rule from the energy
-// decrease and the smallest det J; it stops when nothing is inverted or after 25 sweeps
-// without fewer inverted hexes. The phase is kept only if it does not break the
+// decrease and the smallest det J; after 25 sweeps without fewer inverted hexes the region
+// grows by a ring around what is still inverted (up to 4 rings, eps restarted), then it
+// stops; it also stops when nothing is inverted. The phase is kept only if it does not break the
 // contract (else the points are restored).
 // Phase 2, quality: sweeps over the vertices of the hexes below min_quality, worst first;
 // per vertex three candidate moves (down the barrier gradient, up the numerical gradient
