@@ -183,9 +183,10 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
     const VertexDomain domain{tree, curves, constraints};
     const detail::VertexHexes incidence(mesh);
     detail::BarrierEnergy energy(mesh);
-    detail::OptimiseContext c{
-        mesh, domain, incidence, state.scaled_jacobian,
-        std::clock() + static_cast<std::clock_t>(std::min(options.time_limit_ms, 1e9) * 1e-3 * CLOCKS_PER_SEC)};
+    const std::clock_t start = std::clock();
+    const auto budget = static_cast<std::clock_t>(std::min(options.time_limit_ms, 1e9) * 1e-3 * CLOCKS_PER_SEC);
+    // Phase 1 gets at most half the budget, so phase 2 always has time.
+    detail::OptimiseContext c{mesh, domain, incidence, state.scaled_jacobian, start + budget / 2};
     if (state.inverted > 0) {
         const std::vector<Eigen::Vector3d> before = mesh.points;
         const std::vector<double> sj_before = state.scaled_jacobian;
@@ -201,12 +202,14 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
         }
     }
     energy.eps = 1e-3;
+    r.hit_time_limit = c.out_of_time();
+    c.deadline = start + budget;
     r.moves = detail::quality_phase(c, energy, options.min_quality, options.quality_sweeps, r.quality_sweeps);
     state.inverted = count_inverted(state.scaled_jacobian);
     r.inverted_after = state.inverted;
     r.min_after = geometry::summarize(state.scaled_jacobian).min;
     r.reached_target = r.min_after >= options.min_quality;
-    r.hit_time_limit = c.out_of_time();
+    r.hit_time_limit = r.hit_time_limit || c.out_of_time();
     return r;
 }
 

@@ -8,7 +8,8 @@
 // Contract: the inverted count is never larger than the input's and the minimum scaled
 //         Jacobian never lower; Surface vertices end on the surface (their closest point),
 //         Curve vertices on their polyline, Corner vertices where they were. Bounded by
-//         sweeps and by time_limit_ms of CPU time (checked between sweeps).
+//         sweeps and by time_limit_ms of CPU time (checked between sweeps; phase 1 gets at
+//         most half of it).
 // Errors: std::invalid_argument from check_constraints.
 //
 // Phase 1, untangle (only if some hex is inverted): the barrier energy f_eps of
