@@ -10,6 +10,7 @@
 #include "dualhex/geometry/aabb_tree.hpp"
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/mesher/optimise.hpp"
+#include "dualhex/mesher/surface_smooth.hpp"
 #include "test_geometry_fixture.hpp"
 #include "test_geometry_hex_block.hpp"
 
@@ -146,4 +147,30 @@ RC_GTEST_PROP(MesherOptimise, NeverMoreInvertedNeverLowerMinimum, ()) {
     RC_ASSERT(r.inverted_after <= r.inverted_before);
     RC_ASSERT(r.min_after >= r.min_before);
     RC_ASSERT(count_inverted(m) == r.inverted_after);
+}
+
+// The surface part of the smooth stage: surface vertices pulled apart along a face come
+// back towards even spacing, on the surface, without new inverted hexes; interior and
+// corner vertices do not move.
+TEST(MesherSmooth, SurfaceSmoothingStaysOnTheSurface) {
+    HexMesh m = geometry_test::hex_block(3, 3, 3).mesh;
+    VertexConstraints c = block_roles(m, VertexRole::Surface);
+    const std::size_t corner = static_cast<std::size_t>(id(0, 0, 3));
+    c.role[corner] = VertexRole::Corner;
+    const std::size_t moved = static_cast<std::size_t>(id(1, 1, 3));
+    m.points[moved] += Eigen::Vector3d(0.8, 0.7, 0);  // along the top face
+    const HexMesh before = m;
+    const geometry::AabbTree tree(geometry_test::unit_cube_surface(0.0, 3.0));
+    const FeatureCurves curves;
+    const VertexDomain domain{tree, curves, c};
+    QualityState state = quality_state(m);
+    const std::size_t inverted = state.inverted;
+    EXPECT_GT(smooth_surface(m, domain, 5, state), 0);
+    EXPECT_LE(state.inverted, inverted);
+    EXPECT_EQ(state.scaled_jacobian, quality_state(m).scaled_jacobian);
+    EXPECT_LT((m.points[moved] - Eigen::Vector3d(1, 1, 3)).norm(), (before.points[moved] - Eigen::Vector3d(1, 1, 3)).norm());
+    for (std::size_t v = 0; v < m.points.size(); ++v) {
+        if (c.role[v] == VertexRole::Surface) EXPECT_LT(tree.squared_distance(m.points[v]), 1e-24) << v;
+        if (c.role[v] != VertexRole::Surface) EXPECT_EQ(m.points[v], before.points[v]) << v;
+    }
 }
