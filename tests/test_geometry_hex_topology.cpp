@@ -6,12 +6,13 @@
 #include <algorithm>
 
 #include "dualhex/geometry/hex_topology.hpp"
-#include "dualhex/geometry/mesh_pipeline.hpp"
+#include "dualhex/mesher/default_shape.hpp"
 #include "test_geometry_fixture.hpp"
 #include "test_geometry_hex_block.hpp"
 
 using namespace dualhex::geometry;
 using namespace geometry_test;
+using dualhex::mesher::default_shape;
 
 namespace {
 
