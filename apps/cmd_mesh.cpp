@@ -1,8 +1,10 @@
 // dualhex mesh [INPUT] -o OUT: a closed triangle surface (OBJ/OFF/STL/PLY; none: the
 // embedded default torus) to an all-hex mesh, through the octree, pairing + balancing,
-// element installation, the clipped dual, extraction of the hexes inside, projection of
-// the boundary onto the surface and Laplacian smoothing (mesher/mesh_pipeline.hpp).
-// Writes OUT by extension (.vtk, .vtu, .mesh) and reports quality and times.
+// element installation, the clipped dual, the core (dual hexes well inside, repaired to a
+// manifold), one pad layer onto the surface, smoothing, the optimiser and the topology
+// check (mesher/mesh_pipeline.hpp). Writes OUT by extension (.vtk, .vtu, .mesh) and
+// reports quality, topology and times. Exit 1 if the boundary's topology differs from the
+// input's (the mesh is still written, to look at), unless --accept-topology-change.
 #include <unistd.h>
 
 #include <chrono>
@@ -25,7 +27,8 @@ struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int smooth = 5;
     double feature_angle = 45.0;
-    bool json = false, force = false;
+    double min_quality = 0.5, core_margin = 0.1, optimise_ms = 0, pad_ray_limit = 2.0;
+    bool json = false, force = false, accept_topology_change = false;
     MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
 
@@ -58,11 +61,18 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.balance = opt.balance == "strong" ? Balance::Strong : Balance::Weak;
     options.smooth_iterations = opt.smooth;
     options.feature_angle = opt.feature_angle;
+    options.optimise.min_quality = opt.min_quality;
+    options.core.margin = opt.core_margin;
+    options.optimise.time_limit_ms = opt.optimise_ms;
+    options.pad.ray_limit = opt.pad_ray_limit;
     if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
     warn_if_capped(size, tree);
     mesher::MeshPipelineResult r;
     try {
         r = mesher::mesh_surface(tree, options);
+    } catch (const mesher::EmptyCoreError& e) {
+        std::cerr << "error: " << input_name << ": " << e.what() << '\n';
+        throw Exit{kInputError};
     } catch (const geometry::OctreeTooLarge& e) {
         throw UsageError(std::string(e.what()) + " (a coarser --size or --size-rel, or raise --max-leaves)");
     }
@@ -73,6 +83,8 @@ void run_mesh(const MeshOptionsCli& opt) {
     r.ms.write = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
     const auto& q = r.quality;
+    const auto& t = r.topology;
+    const auto& d = r.distance;
     if (opt.json) {
         print_json({{"input", input_name},
                     {"output", opt.output},
@@ -97,8 +109,9 @@ void run_mesh(const MeshOptionsCli& opt) {
                     {"dual_hexes", r.dual_hexes},
                     {"hexes", r.mesh.hexes.size()},
                     {"vertices", r.mesh.points.size()},
+                    {"core_hexes", r.core_hexes},
+                    {"pad_hexes", r.pad_hexes},
                     {"boundary_vertices", r.boundary_vertices},
-                    {"inverted_after_projection", r.inverted_after_projection},
                     {"features",
                      {{"angle", opt.feature_angle},
                       {"corners", r.features.corners},
@@ -107,6 +120,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"curves_snapped", r.features.curves_snapped},
                       {"curve_vertices", r.features.curve_vertices},
                       {"patch_moves", r.features.patch_moves},
+                      {"released", r.features.released},
                       {"inverted_before", r.features.inverted_before},
                       {"inverted_after", r.features.inverted_after},
                       {"sharp_samples", r.creases.samples},
@@ -116,12 +130,57 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"spurious_creases", r.creases.spurious_creases},
                       {"crease_edges_after_snap", r.creases_snapped.crease_edges},
                       {"spurious_creases_after_snap", r.creases_snapped.spurious_creases}}},
+                    {"core",
+                     {{"selected_by_rule", r.core.selected_by_rule},
+                      {"repair_added", r.core.repair_added},
+                      {"repair_removed", r.core.repair_removed},
+                      {"repair_manifold", r.core.repair_manifold},
+                      {"kept_components", r.core.kept_components},
+                      {"dropped_components", r.core.dropped_components}}},
+                    {"pad",
+                     {{"by_ray", r.padded_by_ray},
+                      {"by_closest_point", r.padded_by_closest_point},
+                      {"switched", r.padded_switched}}},
+                    {"inverted_after_pad", r.inverted_after_pad},
                     {"smooth_iterations", r.smooth_iterations_done},
-                    {"untangled_vertices", r.untangled_vertices},
-                    {"restored_vertices", r.restored_vertices},
+                    {"surface_smooth_iterations", r.surface_smooth_iterations_done},
+                    {"optimise",
+                     {{"min_quality", opt.min_quality},
+                      {"inverted_before", r.optimise.inverted_before},
+                      {"inverted_after", r.optimise.inverted_after},
+                      {"min_before", r.optimise.min_before},
+                      {"min_after", r.optimise.min_after},
+                      {"untangle_sweeps", r.optimise.untangle_sweeps},
+                      {"untangle_kept", r.optimise.untangle_kept},
+                      {"quality_sweeps", r.optimise.quality_sweeps},
+                      {"moves", r.optimise.moves},
+                      {"reached_target", r.optimise.reached_target},
+                      {"hit_time_limit", r.optimise.hit_time_limit}}},
+                    {"topology",
+                     {{"manifold", t.manifold},
+                      {"non_manifold_edges", t.non_manifold_edges},
+                      {"non_manifold_vertices", t.non_manifold_vertices},
+                      {"components", t.components()},
+                      {"euler", t.euler},
+                      {"input_components", t.input_components()},
+                      {"input_euler", t.input_euler},
+                      {"hex_components", t.hex_components},
+                      {"matches", t.matches},
+                      {"problems", t.problems}}},
+                    {"surface_distance",
+                     {{"mean", d.relative(d.mean())},
+                      {"max", d.relative(d.max())},
+                      {"mesh_to_surface_max", d.relative(d.mesh_to_surface.max)},
+                      {"surface_to_mesh_max", d.relative(d.surface_to_mesh.max)},
+                      {"mesh_to_surface_farthest",
+                       {d.mesh_to_surface.farthest.x(), d.mesh_to_surface.farthest.y(), d.mesh_to_surface.farthest.z()}},
+                      {"surface_to_mesh_farthest",
+                       {d.surface_to_mesh.farthest.x(), d.surface_to_mesh.farthest.y(), d.surface_to_mesh.farthest.z()}},
+                      {"on_surface", d.share_vertices_on_surface}}},
                     {"scaled_jacobian",
                      {{"min", q.min}, {"mean", q.mean}, {"below_0", q.share_negative}, {"below_0_2", q.share_below_02}}},
                     {"singular_edge_valences", histogram_json(r.singular_edge_valences)},
+                    {"core_singular_edge_valences", histogram_json(r.core.singular_edge_valences)},
                     {"hausdorff", r.hausdorff.max},
                     {"hausdorff_mean", r.hausdorff.mean},
                     {"ms",
@@ -132,12 +191,12 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"install", r.ms.install},
                       {"verify", r.ms.verify},
                       {"dual", r.ms.dual},
-                      {"extract", r.ms.extract},
-                      {"project", r.ms.project},
+                      {"core", r.ms.core},
+                      {"pad", r.ms.pad},
                       {"features", r.ms.features},
                       {"smooth", r.ms.smooth},
-                      {"untangle", r.ms.untangle},
-                      {"restore", r.ms.restore},
+                      {"optimise", r.ms.optimise},
+                      {"check", r.ms.check},
                       {"report", r.ms.report},
                       {"write", r.ms.write}}}});
     } else {
@@ -146,13 +205,10 @@ void run_mesh(const MeshOptionsCli& opt) {
                     r.target_size, opt.size.preset.c_str(), r.size_level, r.octree_depth, size.max_depth);
         std::printf("grid:             %zu leaves, %zu installed cells, %zu dual hexes\n", r.leaves, r.cells,
                     r.dual_hexes);
-        std::printf("mesh:             %zu hexes, %zu vertices (%zu on the boundary, projected)\n",
-                    r.mesh.hexes.size(), r.mesh.points.size(), r.boundary_vertices);
+        std::printf("mesh:             %zu hexes (%zu core, %zu pad), %zu vertices (%zu on the surface)\n",
+                    r.mesh.hexes.size(), r.core_hexes, r.pad_hexes, r.mesh.points.size(), r.boundary_vertices);
         std::printf("scaled Jacobian:  min %.4f, mean %.4f, < 0: %.4f%%, < 0.2: %.4f%%\n", q.min, q.mean,
                     100 * q.share_negative, 100 * q.share_below_02);
-        std::printf("inverted:         %zu after projection; %d smoothing iterations; %zu vertex pull-backs; %zu "
-                    "restored to their feature\n",
-                    r.inverted_after_projection, r.smooth_iterations_done, r.untangled_vertices, r.restored_vertices);
         if (opt.feature_angle > 0)
             std::printf("features:         %zu/%zu corners, %zu/%zu curves snapped (%zu curve vertices, %zu moved "
                         "to their patch); inverted %zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%% "
@@ -161,15 +217,30 @@ void run_mesh(const MeshOptionsCli& opt) {
                         r.features.curve_vertices, r.features.patch_moves, r.features.inverted_before, r.features.inverted_after,
                         100 * r.creases.kept_share(), 100 * r.creases_snapped.kept_share(), r.creases.spurious_creases,
                         r.creases.crease_edges);
-        std::printf("singular edges:   %s (interior, valence: count)\n", histogram_text(r.singular_edge_valences).c_str());
-        std::printf("surface distance: max %.3g, mean %.3g (of the bbox diagonal)\n", r.hausdorff.max,
-                    r.hausdorff.mean);
+        std::printf("optimise:         min %.4f -> %.4f, inverted %zu -> %zu (target %.2f %s)\n", r.optimise.min_before,
+                    r.optimise.min_after, r.optimise.inverted_before, r.optimise.inverted_after, opt.min_quality,
+                    r.optimise.reached_target ? "reached" : "not reached");
+        std::printf("topology:         %s; %zu boundary components (input %zu)%s\n",
+                    t.manifold ? "manifold" : "NOT manifold", t.components(), t.input_components(),
+                    t.matches ? ", matches the input" : ", DIFFERS from the input");
+        for (const auto& p : t.problems) std::printf("  %s\n", p.c_str());
+        std::printf("singular edges:   %s (interior, valence: count); core interior: %s\n",
+                    histogram_text(r.singular_edge_valences).c_str(),
+                    histogram_text(r.core.singular_edge_valences).c_str());
+        std::printf("surface distance: two-sided mean %.3g, max %.3g (of the bbox diagonal); %.2f%% vertices on it\n",
+                    d.relative(d.mean()), d.relative(d.max()), 100 * d.share_vertices_on_surface);
         std::printf("time (ms):        octree %.1f, balance+pair %.1f, install %.1f, verify %.1f, dual %.1f, "
-                    "extract %.1f, project %.1f, features %.1f, smooth %.1f, untangle %.1f, restore %.1f, report %.1f, "
+                    "core %.1f, pad %.1f, features %.1f, smooth %.1f, optimise %.1f, check %.1f, report %.1f, "
                     "write %.1f\n",
-                    r.ms.octree, r.ms.balance_pair, r.ms.install, r.ms.verify, r.ms.dual, r.ms.extract, r.ms.project,
-                    r.ms.features, r.ms.smooth, r.ms.untangle, r.ms.restore, r.ms.report, r.ms.write);
+                    r.ms.octree, r.ms.balance_pair, r.ms.install, r.ms.verify, r.ms.dual, r.ms.core, r.ms.pad,
+                    r.ms.features, r.ms.smooth, r.ms.optimise, r.ms.check, r.ms.report, r.ms.write);
         std::printf("wrote %s\n", opt.output.c_str());
+    }
+    if (!t.matches && !opt.accept_topology_change) {
+        std::cerr << "error: " << input_name << ": the mesh's boundary topology differs from the input's";
+        for (const auto& p : t.problems) std::cerr << "; " << p;
+        std::cerr << " (pass --accept-topology-change to accept)\n";
+        throw Exit{kCheckFailed};
     }
 }
 
@@ -179,7 +250,7 @@ void register_mesh(CLI::App& app) {
     auto opt = std::make_shared<MeshOptionsCli>();
     CLI::App* sub = app.add_subcommand(
         "mesh", "Mesh a closed triangle surface (OBJ/OFF/STL/PLY; default: a torus) with hexahedra: octree, "
-                "balance + pair, install, clipped dual, keep the hexes inside, project, smooth; write OUT "
+                "balance + pair, install, clipped dual, core, pad layer, smooth, optimise, topology check; write OUT "
                 "(.vtk, .vtu or .mesh)");
     sub->add_option("input", opt->input, "Surface file (closed, manifold); omitted: the embedded torus");
     sub->add_option("-o,--output", opt->output, "Output hex mesh (.vtk, .vtu or .mesh)")->required();
@@ -193,6 +264,20 @@ void register_mesh(CLI::App& app) {
                     "Sharp features: input edges whose normals deviate by more than DEG degrees are kept as hex "
                     "creases (default 45; 0: off)")
         ->check(CLI::Range(0.0, 179.0));
+    sub->add_option("--min-quality", opt->min_quality,
+                    "Target minimum scaled Jacobian of the optimiser (default 0.5): optimise until reached or no progress")
+        ->check(CLI::Range(0.0, 1.0));
+    sub->add_option("--core-margin", opt->core_margin,
+                    "Core hexes have all corners at least this times their mean edge inside the surface (default 0.1)")
+        ->check(CLI::Range(0.0, 2.0));
+    sub->add_option("--optimise-ms", opt->optimise_ms, "CPU-time bound of the optimiser in ms, checked between sweeps (default 0: none, only the sweep bounds, so the mesh does not depend on the machine's load)")
+        ->check(CLI::Range(0.0, 1e7));
+    sub->add_option("--pad-ray-limit", opt->pad_ray_limit,
+                    "Pad: an outer vertex is the normal ray's hit if it is within this times (distance + edge), else "
+                    "the closest point (default 2; 0: always the closest point)")
+        ->check(CLI::Range(0.0, 100.0));
+    sub->add_flag("--accept-topology-change", opt->accept_topology_change,
+                  "Exit 0 even if the boundary's components or Euler characteristics differ from the input's");
     add_json_flag(*sub, opt->json);
     sub->callback([opt] { run_mesh(*opt); });
 }

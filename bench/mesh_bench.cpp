@@ -46,8 +46,8 @@ int main(int argc, char** argv) {
     std::printf("machine: %s, CPU: %s\n", u.nodename, dualhex::bench::cpu_model().c_str());
     std::printf("max depth %d, %s balance; times in ms\n\n", depth, balance == Balance::Weak ? "weak" : "strong");
     std::printf("%-18s %7s %7s %7s %7s %7s %6s %7s %7s %6s %6s %7s | %7s %7s %8s %7s %7s %7s %8s\n", "model", "leaves",
-                "hexes", "octree", "pair", "install", "verify", "dual", "extract", "proj", "smooth", "total", "SJ_min",
-                "SJ_mean", "inverted", "<0.2", "inv_prj", "haus", "sing");
+                "hexes", "octree", "pair", "install", "verify", "dual", "core", "pad", "opt", "total", "SJ_min",
+                "SJ_mean", "inverted", "<0.2", "inv_pad", "haus", "sing");
     int failures = 0;
     for (const auto& path : models) {
         const std::string name = std::filesystem::path(path).filename().string();
@@ -65,8 +65,8 @@ int main(int argc, char** argv) {
             std::printf("%-18s %7zu %7zu %7.0f %7.0f %7.0f %6.0f %7.0f %7.0f %6.0f %6.0f %7.0f | %7.3f %7.3f %7.3f%% %6.2f%% "
                         "%7zu %7.4f %8zu\n",
                         name.c_str(), r.leaves, r.mesh.hexes.size(), m.octree, m.balance_pair, m.install, m.verify, m.dual,
-                        m.extract, m.project, m.smooth + m.untangle, total, r.quality.min, r.quality.mean,
-                        100 * r.quality.share_negative, 100 * r.quality.share_below_02, r.inverted_after_projection,
+                        m.core, m.pad, m.smooth + m.optimise, total, r.quality.min, r.quality.mean,
+                        100 * r.quality.share_negative, 100 * r.quality.share_below_02, r.inverted_after_pad,
                         r.hausdorff.max, singular);
             std::fflush(stdout);
         } catch (const std::exception& e) {
@@ -74,9 +74,10 @@ int main(int argc, char** argv) {
             ++failures;
         }
     }
-    std::printf("\ncolumns: proj = projection, smooth = smoothing + untangling, total includes reading the file and "
-                "the AABB tree and the report; inverted = share of hexes with SJ < 0, <0.2 = share with SJ < 0.2, "
-                "inv_prj = hexes inverted right after projection (before smoothing/untangling), haus = max sampled "
+    std::printf("\ncolumns: core = core selection + repair, pad = pad layer, opt = smoothing + optimiser, total "
+                "includes reading the file and the AABB tree, the check and the report; inverted = share of hexes with "
+                "SJ < 0, <0.2 = share with SJ < 0.2, inv_pad = hexes inverted right after padding (before "
+                "smoothing/optimising), haus = max sampled "
                 "boundary-to-surface distance / bbox diagonal, sing = interior singular edges\n");
     return failures == 0 ? 0 : 1;
 }

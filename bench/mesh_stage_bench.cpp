@@ -5,8 +5,8 @@
 //
 // Prints one line: TABLE model depth balance leaves dual_hexes hexes read octree balance pair
 // install verify dual extract proj_smooth write total hexes_per_s peak_MB
-// (times in ms, wall clock; read = surface + AABB tree; proj_smooth = projection +
-// smoothing + untangling + report; write = the hex mesh as FILE, default a temporary .vtk
+// (times in ms, wall clock; read = surface + AABB tree; extract = the core stage;
+// proj_smooth = pad + smoothing + optimiser + check + report; write = the hex mesh as FILE, default a temporary .vtk
 // that is removed; hexes_per_s = clipped-dual hexes / (install + dual); peak = max RSS).
 #include <sys/resource.h>
 #include <unistd.h>
@@ -67,11 +67,11 @@ int main(int argc, char** argv) {
         if (temporary) std::filesystem::remove(out);
         const double total = ms_since(start);
         const auto& m = r.ms;
-        const double proj_smooth = m.project + m.smooth + m.untangle + m.report;
+        const double proj_smooth = m.pad + m.smooth + m.optimise + m.check + m.report;
         std::printf("TABLE %s %d %s %zu %zu %zu %.0f %.0f %.0f %.0f %.0f %.0f %.0f %.0f %.0f %.0f %.0f %.0f %.0f\n",
                     std::filesystem::path(model).stem().c_str(), options.max_depth,
                     options.balance == Balance::Weak ? "weak" : "strong", r.leaves, r.dual_hexes, r.mesh.hexes.size(),
-                    read, m.octree, m.balance, m.pair, m.install, m.verify, m.dual, m.extract, proj_smooth, m.write,
+                    read, m.octree, m.balance, m.pair, m.install, m.verify, m.dual, m.core, proj_smooth, m.write,
                     total, 1000.0 * static_cast<double>(r.dual_hexes) / (m.install + m.dual), peak_mb());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "mesh_stage_bench: %s: %s\n", model.c_str(), e.what());

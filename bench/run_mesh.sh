@@ -5,8 +5,8 @@
 # (Release, build/ unless BUILD_DIR is set). Not part of the test suite.
 #   bench/run_mesh.sh [depth ...]          (default: 6 7 8; CASE_TIMEOUT seconds, default 600)
 # Columns: times in ms (wall); ld = install + dual in thousands of clipped-dual hexes per
-# second; extr = keeping the hexes inside; peak = max RSS of the weak case in MB; hexW / hexS = hexes of the final mesh with
-# weak / strong balance; proj = projection + smoothing + untangling + quality report.
+# second; extr = the core stage (selection + manifold repair); peak = max RSS of the weak case in MB; hexW / hexS = hexes of the final mesh with
+# weak / strong balance; proj = pad + smoothing + optimiser + topology check + quality report.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 build="${BUILD_DIR:-$here/../build}"

@@ -29,3 +29,6 @@ add_test(NAME mesh_gmsh_readback
 
 # the features stage and the crease measurement (mesher/features.hpp, feature_report.hpp)
 dualhex_add_test(test_mesher_features SOURCES test_mesher_features.cpp DEPS dualhex::mesher)
+# the mesher's core, pad, optimise and check stages on hand-made meshes
+dualhex_add_test(test_mesher_optimise SOURCES test_mesher_optimise.cpp DEPS dualhex::mesher)
+dualhex_add_test(test_mesher_pad SOURCES test_mesher_pad.cpp DEPS dualhex::mesher)

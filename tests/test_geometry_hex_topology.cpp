@@ -12,6 +12,7 @@
 
 using namespace dualhex::geometry;
 using namespace geometry_test;
+using dualhex::mesher::default_shape;
 
 namespace {
 

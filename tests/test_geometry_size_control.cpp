@@ -247,8 +247,10 @@ TEST(SizeControl, CubeMeshHasBoundaryHexesOfTheTargetSize) {
     EXPECT_EQ(level3.size_level, 3);
     const double coarse = median_boundary_edge(level3.mesh);
     const double fine = median_boundary_edge(mesh_cube(0.16, 8).mesh);
-    EXPECT_NEAR(coarse, 0.3, 0.3 * 0.25);
-    EXPECT_NEAR(fine, 0.15, 0.15 * 0.25);
+    // The boundary hexes are the pad's: they span the core's margin to the surface, so
+    // they come out up to ~1.3x the cell size; a level off would be 2x.
+    EXPECT_NEAR(coarse, 0.3, 0.3 * 0.4);
+    EXPECT_NEAR(fine, 0.15, 0.15 * 0.4);
     // A finer size under a low cap stops at the cap: the same mesh as the cap's own size.
     const mesher::MeshPipelineResult capped = mesh_cube(0.01, 4);
     EXPECT_EQ(capped.size_level, 8);

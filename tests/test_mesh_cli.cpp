@@ -54,10 +54,12 @@ TEST_F(MeshCli, DefaultShapeJsonReport) {
                             "hausdorff", "ms"})
         EXPECT_TRUE(j.contains(key)) << key;
     for (const char* key : {"min", "mean", "below_0", "below_0_2"}) EXPECT_TRUE(j.at("scaled_jacobian").contains(key)) << key;
-    for (const char* key : {"octree", "balance_pair", "install", "dual", "extract", "project", "smooth", "write"})
+    for (const char* key : {"octree", "balance_pair", "install", "dual", "core", "pad", "smooth", "optimise", "check", "write"})
         EXPECT_TRUE(j.at("ms").contains(key)) << key;
     EXPECT_GT(j.at("hexes").get<int>(), 0);
     EXPECT_GT(j.at("scaled_jacobian").at("min").get<double>(), 0.0);
+    EXPECT_TRUE(j.at("topology").at("matches").get<bool>());
+    EXPECT_EQ(j.at("topology").at("euler"), nlohmann::json::array({0}));  // a torus
     EXPECT_TRUE(fs::exists(out));
 
     // Exists: refused without --force (exit 2), file untouched; --force replaces it.
@@ -66,9 +68,54 @@ TEST_F(MeshCli, DefaultShapeJsonReport) {
     EXPECT_EQ(again.rc, 2) << again.err;
     EXPECT_NE(again.err.find(out), std::string::npos) << again.err;
     EXPECT_EQ(fs::file_size(out), size);
-    const Result forced = run({"mesh", "-o", out, "--max-depth", "3", "--force"});
+    const Result forced = run({"mesh", "-o", out, "--max-depth", "4", "--force"});
     EXPECT_EQ(forced.rc, 0) << forced.err;
     EXPECT_NE(forced.out.find("scaled Jacobian"), std::string::npos) << forced.out;
+    EXPECT_NE(forced.out.find("matches the input"), std::string::npos) << forced.out;
+}
+
+// Too coarse for a core (depth 2): a clear error naming the input, exit 3, nothing written.
+TEST_F(MeshCli, NoCoreExits3) {
+    const std::string out = (dir_ / "coarse.vtk").string();
+    const Result r = run({"mesh", "-o", out, "--max-depth", "2"});
+    EXPECT_EQ(r.rc, 3) << r.out << r.err;
+    EXPECT_NE(r.err.find("<default torus>"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("core is empty"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// The topology check turns into exit 1 (the mesh is written); accepted on request.
+TEST_F(MeshCli, TopologyMismatchExits1UnlessAccepted) {
+    // Two cubes, the second far below the octree's resolution: it gets no core, so the
+    // mesh has one boundary component where the input has two.
+    const fs::path input = dir_ / "two_cubes.off";
+    {
+        std::ofstream f(input);
+        f << "OFF\n16 24 0\n";
+        for (const auto& [lo, hi] : {std::pair{0.0, 1.0}, std::pair{1.5, 1.501}})
+            for (int v = 0; v < 8; ++v) f << (v & 1 ? hi : lo) << ' ' << (v & 2 ? hi : lo) << ' ' << (v & 4 ? hi : lo) << '\n';
+        for (int base : {0, 8})
+            for (const auto& t : std::vector<std::array<int, 3>>{{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                                  {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}})
+                f << "3 " << t[0] + base << ' ' << t[1] + base << ' ' << t[2] + base << '\n';
+    }
+    const std::string out = (dir_ / "changed.vtk").string();
+    const Result r = run({"mesh", input.string(), "-o", out, "--max-depth", "4", "--json"});
+    ASSERT_EQ(r.rc, 1) << r.out << r.err;
+    EXPECT_NE(r.err.find("differs from the input"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(input.string()), std::string::npos) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const auto& t = j.at("topology");
+    for (const char* key : {"manifold", "non_manifold_edges", "non_manifold_vertices", "components", "euler",
+                            "input_components", "input_euler", "matches"})
+        EXPECT_TRUE(t.contains(key)) << key;
+    EXPECT_FALSE(t.at("matches").get<bool>());
+    EXPECT_EQ(t.at("input_euler"), nlohmann::json::array({2, 2}));
+    EXPECT_EQ(t.at("euler"), nlohmann::json::array({2}));
+    EXPECT_TRUE(fs::exists(out));
+    const Result accepted =
+        run({"mesh", input.string(), "-o", out, "--max-depth", "4", "--force", "--accept-topology-change"});
+    EXPECT_EQ(accepted.rc, 0) << accepted.err;
 }
 
 TEST_F(MeshCli, BadInputExits3NamingTheFile) {

@@ -99,10 +99,17 @@ TEST(MeshPipeline, GaoBunnyAllHex) {
     EXPECT_GT(r.mesh.hexes.size(), 500u);
     EXPECT_GT(r.leaves, 1000u);
     EXPECT_GT(r.dual_hexes, r.mesh.hexes.size());
-    EXPECT_GT(r.quality.min, 0.0);  // untangling pulls back every hex below 0.05 when it can
-    // A transition grid: the kept mesh has singular interior edges, all of valence 3..7.
-    EXPECT_FALSE(r.singular_edge_valences.empty());
-    for (const auto& [valence, count] : r.singular_edge_valences) {
+    EXPECT_GT(r.quality.min, 0.0);  // the optimiser untangles
+    // The boundary is the pad's outer surface: every vertex on the input, same topology.
+    EXPECT_TRUE(r.topology.matches) << (r.topology.problems.empty() ? "" : r.topology.problems.front());
+    EXPECT_EQ(r.distance.share_vertices_on_surface, 1.0);
+    EXPECT_EQ(r.boundary_vertices, r.distance.boundary_vertices);
+    EXPECT_GE(r.optimise.min_after, r.optimise.min_before);
+    EXPECT_LE(r.optimise.inverted_after, r.optimise.inverted_before);
+    // A transition grid: the core has singular interior edges, all of valence 3..7 (the
+    // schemes'); the pad layer adds edges of other valences where it meets the core.
+    EXPECT_FALSE(r.core.singular_edge_valences.empty());
+    for (const auto& [valence, count] : r.core.singular_edge_valences) {
         EXPECT_GE(valence, 3);
         EXPECT_LE(valence, 7);
         EXPECT_NE(valence, 4);

@@ -1,28 +1,25 @@
 // The surface-to-hex-mesh pipeline (mesh_pipeline.hpp): the stages in order, each timed.
 #include "dualhex/mesher/mesh_pipeline.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
+#include <map>
 #include <stdexcept>
 
 #include "dualhex/grid/refinement.hpp"
+#include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/mesher/cell_levels.hpp"
-#include "dualhex/mesher/extract.hpp"
 #include "dualhex/mesher/feature_patches.hpp"
-#include "dualhex/mesher/feature_restore.hpp"
 #include "dualhex/mesher/install_stage.hpp"
-#include "dualhex/mesher/project.hpp"
+#include "dualhex/mesher/select_core.hpp"
 #include "dualhex/mesher/smooth.hpp"
-#include "dualhex/mesher/untangle.hpp"
+#include "dualhex/mesher/surface_smooth.hpp"
 
 namespace dualhex::mesher {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// A snapped vertex goes back to its feature only if no hex around it falls below this
-// (or falls further if already below): the report's quality bar, so the share of hexes
-// below 0.2 does not grow for the creases' sake.
-constexpr double kRestoreBelow = 0.2;
 
 // Runs one named stage: reports its name, times it into `ms`, returns what it returns.
 template <class Stage>
@@ -39,9 +36,89 @@ auto timed(const MeshPipelineOptions& options, const char* name, double& ms, Sta
 
 void check_options(const MeshPipelineOptions& options) {
     check_size_options(options);
+    if (!(options.core.margin >= 0)) throw std::invalid_argument("core margin must be >= 0");
     if (options.smooth_iterations < 0) throw std::invalid_argument("smoothing iterations must be >= 0");
     if (!(options.feature_angle >= 0 && options.feature_angle < 180))
         throw std::invalid_argument("feature angle must be 0 (off) or in (0, 180) degrees");
+}
+
+// The feature curves as the moving stages take them: closed iff the first point is
+// repeated at the end (constrained_position.hpp), indexed as snap_features' curve ids.
+FeatureCurves moving_stage_curves(const geometry::FeatureSet& features) {
+    FeatureCurves out;
+    for (const geometry::FeatureCurve& c : features.curves) {
+        out.push_back(c.points);
+        if (c.closed && !c.points.empty()) out.back().push_back(c.points.front());
+    }
+    return out;
+}
+
+// Per hex of the padded mesh: its octree level. A core hex has its dual hex's level; a pad
+// hex (one per core boundary quad, after the core hexes) the level of the core hex whose
+// face it grows from, found by the quad's sorted vertex ids.
+std::vector<int> padded_levels(const HexMesh& padded, std::size_t core_hexes, const std::vector<int>& core_levels) {
+    std::vector<int> out(core_levels.begin(), core_levels.end());
+    std::map<std::array<int, 4>, int> face_level;
+    for (std::size_t h = 0; h < core_hexes; ++h)
+        for (const auto& f : geometry::kHexFaces) {
+            std::array<int, 4> key{};
+            for (std::size_t i = 0; i < 4; ++i) key[i] = padded.hexes[h][static_cast<std::size_t>(f[i])];
+            std::sort(key.begin(), key.end());
+            face_level.emplace(key, core_levels[h]);
+        }
+    for (std::size_t h = core_hexes; h < padded.hexes.size(); ++h) {
+        std::array<int, 4> key{padded.hexes[h][0], padded.hexes[h][1], padded.hexes[h][2], padded.hexes[h][3]};
+        std::sort(key.begin(), key.end());
+        const auto it = face_level.find(key);
+        out.push_back(it == face_level.end() ? -1 : it->second);
+    }
+    return out;
+}
+
+// Stage "core": the dual embedded, the core chosen and its interior valences counted.
+CoreSelection core_stage(const ClippedDual& dual, const InstallResult& installed, const RootCube& root,
+                         const AabbTree& tree, const CoreOptions& options) {
+    const EmbeddedDual embedded = embed_dual(dual, root_extent(installed), root, tree);
+    CoreSelection core = select_core(dual, embedded, geometry::surface_topology(tree.surface()).size(), options);
+    core.singular_edge_valences = interior_singular_edge_valences(core.mesh);
+    return core;
+}
+
+// Stage "pad": result.core.mesh padded into result.mesh, with its roles and figures.
+void pad_stage(MeshPipelineResult& result, const AabbTree& tree, const PadOptions& options) {
+    PadResult padded = pad_layer(result.core.mesh, tree, options);
+    result.core.mesh = {};
+    result.mesh = std::move(padded.mesh);
+    result.constraints = std::move(padded.constraints);
+    result.pad_hexes = padded.pad_hexes;
+    result.boundary_vertices = padded.surface_vertices;
+    result.padded_by_ray = padded.by_ray;
+    result.padded_by_closest_point = padded.by_closest_point;
+    result.padded_switched = padded.switched;
+}
+
+// Stage "smooth": surface vertices along the surface, then the interior Laplacian.
+void smooth_stage(MeshPipelineResult& result, const VertexDomain& domain, int iterations, QualityState& state) {
+    result.surface_smooth_iterations_done = smooth_surface(result.mesh, domain, iterations, state);
+    std::vector<char> fixed(result.mesh.points.size());
+    for (std::size_t v = 0; v < fixed.size(); ++v) fixed[v] = result.constraints.role[v] != VertexRole::Interior;
+    result.smooth_iterations_done = smooth_interior(result.mesh, fixed, iterations, state);
+}
+
+// Curve and Corner vertices of inverted hexes become Surface vertices; returns how many.
+std::size_t release_features_at_inverted(const HexMesh& mesh, const QualityState& state, VertexConstraints& constraints) {
+    std::size_t released = 0;
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+        if (state.scaled_jacobian[h] > 0) continue;
+        for (int v : mesh.hexes[h]) {
+            VertexRole& role = constraints.role[static_cast<std::size_t>(v)];
+            if (role != VertexRole::Curve && role != VertexRole::Corner) continue;
+            role = VertexRole::Surface;
+            constraints.curve[static_cast<std::size_t>(v)] = -1;
+            ++released;
+        }
+    }
+    return released;
 }
 
 }  // namespace
@@ -76,55 +153,69 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     result.dual_hexes = dual.hexes.size();
     result.dual_edge_valences = clipped_dual_edge_valences(dual);
 
-    HexMesh& mesh = result.mesh;
-    std::vector<std::uint32_t> kept;
-    mesh = timed(options, "extract", ms.extract,
-                 [&] { return extract_inside(dual, root_extent(installed), octree.root, tree, &kept); });
-    const std::vector<int> dual_levels = dual_hex_levels(dual, installed, grid);
-    for (std::uint32_t h : kept) result.cell_data.level.push_back(dual_levels[h]);
-    if (mesh.hexes.empty()) throw std::runtime_error("no hex centroid inside the surface (max depth too small?)");
+    result.core = timed(options, "core", ms.core,
+                        [&] { return core_stage(dual, installed, octree.root, tree, options.core); });
+    if (result.core.mesh.hexes.empty())
+        throw EmptyCoreError("the core is empty: no dual hex lies well inside the surface (max depth too small?)");
+    result.core_hexes = result.core.mesh.hexes.size();
+    std::vector<int> core_levels;
+    {
+        const std::vector<int> dual_levels = dual_hex_levels(dual, installed, grid);
+        for (std::uint32_t h : result.core.dual_hex) core_levels.push_back(dual_levels[h]);
+    }
 
     QualityState state;
-    BoundaryProjection projection = timed(options, "project", ms.project, [&] {
-        BoundaryProjection p = project_boundary(mesh, tree);
-        state = quality_state(mesh);
-        return p;
+    timed(options, "pad", ms.pad, [&] {
+        pad_stage(result, tree, options.pad);
+        state = quality_state(result.mesh);
     });
-    result.boundary_vertices = projection.boundary_vertices;
-    result.inverted_after_projection = state.inverted;
+    result.inverted_after_pad = state.inverted;
+    result.cell_data.level = padded_levels(result.mesh, result.core_hexes, core_levels);
+
     geometry::FeatureSet features;
     HexMesh snapped;  // the mesh as the features stage left it, measured in the report
-    VertexConstraints constraints;
     timed(options, "features", ms.features, [&] {
         if (options.feature_angle <= 0) return;
         geometry::FeatureOptions feature_options;
         feature_options.angle_degrees = options.feature_angle;
         features = geometry::detect_features(tree.surface(), feature_options);
-        result.features = snap_features(mesh, features, constraints);
+        result.features = snap_features(result.mesh, features, result.constraints);
         result.features.patch_moves =
-            project_to_patches(mesh, tree, features, constraints, result.features.path_edges);
-        state = quality_state(mesh);
+            project_to_patches(result.mesh, tree, features, result.constraints, result.features.path_edges);
+        state = quality_state(result.mesh);
         result.features.inverted_after = state.inverted;
-        snapped.points = mesh.points;
+        snapped.points = result.mesh.points;
     });
-    result.smooth_iterations_done = timed(options, "smooth", ms.smooth, [&] {
-        return smooth_interior(mesh, projection.on_boundary, options.smooth_iterations, state);
+    const FeatureCurves curves = moving_stage_curves(features);
+    const VertexDomain domain{tree, curves, result.constraints};
+    timed(options, "smooth", ms.smooth, [&] { smooth_stage(result, domain, options.smooth_iterations, state); });
+    HexMesh& mesh = result.mesh;
+    result.optimise = timed(options, "optimise", ms.optimise, [&] {
+        OptimiseResult r = optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
+        // A snapped feature the optimiser cannot untangle around (organic models have
+        // tessellation "features") is given up: its vertices on inverted hexes become plain
+        // surface vertices and the optimiser runs again. Validity before creases.
+        if (r.inverted_after > 0 && (result.features.released = release_features_at_inverted(mesh, state,
+                                                                                                result.constraints)) > 0) {
+            const OptimiseResult again = optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
+            r.inverted_after = again.inverted_after;
+            r.min_after = again.min_after;
+            r.untangle_sweeps += again.untangle_sweeps;
+            r.quality_sweeps += again.quality_sweeps;
+            r.moves += again.moves;
+            r.reached_target = again.reached_target;
+            r.hit_time_limit = r.hit_time_limit || again.hit_time_limit;
+        }
+        return r;
     });
-    result.untangled_vertices = timed(options, "untangle", ms.untangle, [&] {
-        return untangle_towards(mesh, projection.unprojected, options.untangle_rounds, options.untangle_below, state);
-    });
-
-    result.restored_vertices = timed(options, "restore", ms.restore, [&] {
-        if (options.feature_angle <= 0) return std::size_t{0};
-        return restore_features(mesh, snapped.points, constraints, kRestoreBelow, options.untangle_rounds,
-                                state);
-    });
+    result.topology = timed(options, "check", ms.check, [&] { return check_topology(mesh, tree.surface()); });
 
     timed(options, "report", ms.report, [&] {
         result.quality = geometry::summarize(state.scaled_jacobian);
         result.cell_data.scaled_jacobian = state.scaled_jacobian;
         result.singular_edge_valences = interior_singular_edge_valences(mesh);
         result.hausdorff = geometry::boundary_to_surface_distance(mesh, tree);
+        result.distance = geometry::surface_distance(mesh, tree);
         if (options.feature_angle > 0) {
             result.creases = measure_creases(mesh, tree.surface(), features, options.feature_angle);
             snapped.hexes = mesh.hexes;

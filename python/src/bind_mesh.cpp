@@ -112,9 +112,22 @@ py::dict report(const Meshed& m, const std::string& name, const mesher::MeshPipe
     d["hexes"] = r.mesh.hexes.size();
     d["vertices"] = r.mesh.points.size();
     d["boundary_vertices"] = r.boundary_vertices;
-    d["inverted_after_projection"] = r.inverted_after_projection;
+    d["core_hexes"] = r.core_hexes;
+    d["pad_hexes"] = r.pad_hexes;
+    d["inverted_after_pad"] = r.inverted_after_pad;
     d["smooth_iterations"] = r.smooth_iterations_done;
-    d["untangled_vertices"] = r.untangled_vertices;
+    py::dict topo;
+    topo["manifold"] = r.topology.manifold;
+    topo["matches"] = r.topology.matches;
+    topo["euler"] = r.topology.euler;
+    topo["input_euler"] = r.topology.input_euler;
+    topo["problems"] = r.topology.problems;
+    d["topology"] = topo;
+    py::dict dist;
+    dist["mean"] = r.distance.relative(r.distance.mean());
+    dist["max"] = r.distance.relative(r.distance.max());
+    dist["on_surface"] = r.distance.share_vertices_on_surface;
+    d["surface_distance"] = dist;
     py::dict sj;
     sj["min"] = q.min;
     sj["mean"] = q.mean;
@@ -128,8 +141,9 @@ py::dict report(const Meshed& m, const std::string& name, const mesher::MeshPipe
     const auto& t = r.ms;
     d["ms"] = std::map<std::string, double>{
         {"octree", t.octree}, {"balance", t.balance}, {"pair", t.pair},       {"balance_pair", t.balance_pair},
-        {"install", t.install}, {"verify", t.verify}, {"dual", t.dual},       {"extract", t.extract},
-        {"project", t.project}, {"smooth", t.smooth}, {"untangle", t.untangle}, {"report", t.report}};
+        {"install", t.install}, {"verify", t.verify}, {"dual", t.dual},       {"core", t.core},
+        {"pad", t.pad},         {"features", t.features}, {"smooth", t.smooth}, {"optimise", t.optimise},
+        {"check", t.check},     {"report", t.report}};
     return d;
 }
 

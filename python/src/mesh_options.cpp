@@ -43,14 +43,35 @@ OptionBinding balance_field() {
             [](const Options& o) { return py::cast(o.balance == Balance::Strong ? "strong" : "weak"); }};
 }
 
+// A field of a member struct of Options (e.g. optimise.min_quality), by the same rules.
+template <class T, class Group>
+OptionBinding nested_field(std::string name, Group Options::*group, T Group::*member) {
+    return {name,
+            [name, group, member](Options& o, const py::handle& v) {
+                if (py::isinstance<py::bool_>(v)) throw py::type_error(name + ": expected a number, got bool");
+                try {
+                    (o.*group).*member = v.cast<T>();
+                } catch (const py::cast_error&) {
+                    throw py::type_error(name + ": cannot take a " + std::string(py::str(py::type::of(v))));
+                }
+            },
+            [group, member](const Options& o) { return py::cast((o.*group).*member); }};
+}
+
 // One line per option of MeshPipelineOptions (mesher/mesh_pipeline.hpp).
 const std::vector<OptionBinding>& options_table() {
     static const std::vector<OptionBinding> table{
         balance_field(),
         field("max_depth", &Options::max_depth),
         field("smooth_iterations", &Options::smooth_iterations),
-        field("untangle_rounds", &Options::untangle_rounds),
-        field("untangle_below", &Options::untangle_below),
+        field("size", &Options::size),
+        field("size_rel", &Options::size_rel),
+        field("min_depth", &Options::min_depth),
+        field("thickness_factor", &Options::thickness_factor),
+        field("curvature_angle", &Options::curvature_angle),
+        field("max_leaves", &Options::max_leaves),
+        field("feature_angle", &Options::feature_angle),
+        nested_field("min_quality", &Options::optimise, &mesher::OptimiseOptions::min_quality),
     };
     return table;
 }

@@ -32,7 +32,7 @@ int main() {
     std::cout << "installed " << installed.complex.n_cells() << " cells: " << check.summary() << '\n';
 
     dualhex::mesher::MeshPipelineOptions options;
-    options.max_depth = 3;
+    options.max_depth = 4;  // depth 3 is too coarse for a core inside the torus (EmptyCoreError)
     const dualhex::geometry::AabbTree tree(dualhex::mesher::default_shape());
     const dualhex::mesher::MeshPipelineResult mesh = dualhex::mesher::mesh_surface(tree, options);
     std::cout << "meshed the torus: " << mesh.mesh.hexes.size() << " hexes\n";

@@ -58,6 +58,8 @@ struct FeatureSnapReport {
     double max_move = 0;                         ///< largest vertex displacement (absolute)
     std::vector<PathEdge> path_edges;            ///< the snapped paths' boundary edges
     std::size_t patch_moves = 0;                 ///< left 0 here; the pipeline: project_to_patches' count
+    std::size_t released = 0;                    ///< left 0 here; the pipeline: snapped vertices given up
+                                                 ///< where the optimiser left a hex inverted
 };
 
 /// Throws std::invalid_argument if constraints are neither empty nor of the mesh's size, or

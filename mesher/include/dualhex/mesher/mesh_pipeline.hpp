@@ -9,21 +9,23 @@
 //   install    install_stage.hpp install_schemes      paired grid -> installed complex (WeakRule / StrongRule)
 //   verify     install_stage.hpp require_verified     must pass (a bug otherwise)
 //   dual       install_stage.hpp root_clipped_dual    -> clipped dual, one hex per primal vertex (exact)
-//   extract    extract.hpp extract_inside             -> embedded hexes whose centroid is inside
-//   project    project.hpp project_boundary           boundary quads' vertices -> closest surface points
+//   core       select_core.hpp select_core            -> dual hexes well inside, manifold-repaired, components
+//   pad        pad.hpp pad_layer                      -> core + one hex layer whose outer vertices are on the surface
 //   features   features.hpp snap_features             boundary vertices and edge chains -> input corners and curves,
 //              feature_patches.hpp project_to_patches  then the vertices beside them onto their side's patch
-//   smooth     smooth.hpp smooth_interior             Laplacian of interior vertices, never more inverted
-//   untangle   untangle.hpp untangle_towards          bad hexes' vertices pulled back towards the dual
-//   restore    feature_restore.hpp restore_features    snapped vertices back where that costs no quality
-//   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance
+//   smooth     surface_smooth.hpp, smooth.hpp         surface vertices along the surface, interior Laplacian
+//   optimise   optimise.hpp optimise_mesh             untangle, then raise the minimum scaled Jacobian (roles honoured)
+//   check      check_topology.hpp check_topology      boundary manifold, components and Euler = the input's
+//   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance, creases
 //
 // Writing the file is the caller's job (geometry::write_hex_mesh); MeshTimes::write is left 0.
 // Size control: the MeshSizeOptions part of the options (mesh_size.hpp; default the
-// medium preset). Errors: std::invalid_argument for bad options, geometry::OctreeTooLarge
+// medium preset). A failed topology check is not an exception: result.topology says so
+// (the CLI exits 1). Errors: std::invalid_argument for bad options, geometry::OctreeTooLarge
 // for a size whose octree would exceed max_leaves (estimated first, before any work),
 // std::runtime_error if the installation does not verify, the clipped dual has a non-cube
-// cell (bugs, never bad input) or no hex centroid is inside the surface.
+// cell (bugs, never bad input) or the core is empty (EmptyCoreError: no dual hex well
+// inside the surface).
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -40,6 +42,13 @@
 #include "dualhex/mesher/features.hpp"
 #include "dualhex/mesher/mesh_report.hpp"
 #include "dualhex/mesher/mesh_size.hpp"
+#include "dualhex/mesher/check_topology.hpp"
+#include "dualhex/mesher/constrained_position.hpp"
+#include "dualhex/mesher/mesh_report.hpp"
+#include "dualhex/mesher/optimise.hpp"
+#include "dualhex/mesher/pad.hpp"
+#include "dualhex/mesher/core_selection.hpp"
+#include "dualhex/geometry/surface_distance.hpp"
 #include "dualhex/mesher/quality_state.hpp"
 
 namespace dualhex::mesher {
@@ -54,12 +63,13 @@ using geometry::TriangleSurface;
 /// The size options (size, size_rel, min/max depth, ...: mesh_size.hpp) and the rest.
 struct MeshPipelineOptions : MeshSizeOptions {
     Balance balance = Balance::Weak;
-    int smooth_iterations = 5;
-    int untangle_rounds = 10;
-    double untangle_below = 0.05;
+    int smooth_iterations = 5;          ///< interior Laplacian and surface smoothing iterations (each)
     /// Sharp features: normal deviation (degrees) above which an input edge is a feature
     /// (geometry/feature_curves.hpp); 0 turns the features stage off.
     double feature_angle = 45.0;
+    CoreOptions core;
+    PadOptions pad;
+    OptimiseOptions optimise;           ///< optimise.min_quality: the target minimum scaled Jacobian
     /// Called with a short stage name ("octree", "pair", ...) before each stage (may be empty).
     std::function<void(const std::string&)> progress;
 };
@@ -67,13 +77,14 @@ struct MeshPipelineOptions : MeshSizeOptions {
 /// Milliseconds per stage. balance_pair = balance + pair: the balanced grid first, then the
 /// least paired and balanced refinement of it (the same grid as pairing the octree directly).
 struct MeshTimes {
-    double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, extract = 0,
-           project = 0, features = 0, smooth = 0, untangle = 0, restore = 0, report = 0, write = 0;
+    double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, core = 0, pad = 0,
+           features = 0, smooth = 0, optimise = 0, check = 0, report = 0, write = 0;
 };
 
 struct MeshPipelineResult {
-    HexMesh mesh;                         ///< the kept, projected, smoothed hexes (VTK order)
+    HexMesh mesh;                         ///< core + pad, smoothed, optimised (VTK order)
     geometry::HexCellData cell_data;      ///< per hex of `mesh`: scaled Jacobian, octree level
+    VertexConstraints constraints;        ///< (mesh points) the roles the moving stages honoured
     RootCube root;
     double target_size = 0;               ///< the size at the surface asked for (model units)
     int size_level = 0;                   ///< level of target_size, uncapped (> max_depth: capped)
@@ -83,23 +94,27 @@ struct MeshPipelineResult {
     std::size_t cells = 0;                ///< cells of the installed complex
     std::size_t dual_hexes = 0;           ///< hexes of the clipped dual (whole root cube)
     std::map<int, std::size_t> dual_edge_valences;  ///< of the whole clipped dual
-    std::size_t boundary_vertices = 0;    ///< projected vertices
-    std::size_t inverted_after_projection = 0;
+    CoreSelection core;                   ///< the core stage's figures (core.mesh is moved into mesh)
+    std::size_t core_hexes = 0, pad_hexes = 0;
+    std::size_t boundary_vertices = 0;    ///< on the surface (the pad's outer vertices)
+    std::size_t padded_by_ray = 0, padded_by_closest_point = 0, padded_switched = 0;
+    std::size_t inverted_after_pad = 0;
     /// snap_features' report, with patch_moves from project_to_patches and inverted_after
     /// after both (zeros if the stage is off).
     FeatureSnapReport features;
     /// Sharp-edge samples and creases at 0.5% of the bbox diagonal (zeros if off): of the
-    /// output, and of the mesh as the features stage left it. smooth moves interior
-    /// vertices only; untangle may pull snapped vertices of bad hexes back (it knows no
-    /// vertex roles), restore returns them where that costs no quality.
+    /// output, and of the mesh as the features stage left it (the optimiser keeps snapped
+    /// vertices on their curves and corners).
     CreaseMeasure creases, creases_snapped;
-    int smooth_iterations_done = 0;       ///< accepted Laplacian iterations
-    std::size_t untangled_vertices = 0;   ///< vertex moves back (sum over rounds)
-    std::size_t restored_vertices = 0;    ///< snapped vertices' moves back to their curves (sum over rounds)
+    int smooth_iterations_done = 0;       ///< accepted interior Laplacian iterations
+    int surface_smooth_iterations_done = 0;
+    OptimiseResult optimise;
+    TopologyCheck topology;
     QualitySummary quality;
     /// Interior edges (not on a boundary quad) of the kept mesh with != 4 hexes: valence -> count.
     std::map<int, std::size_t> singular_edge_valences;
-    HausdorffResult hausdorff;
+    HausdorffResult hausdorff;            ///< one-sided, sampled (the older figure)
+    geometry::SurfaceDistance distance;   ///< two-sided (surface_distance.hpp)
     MeshTimes ms;
 };
 

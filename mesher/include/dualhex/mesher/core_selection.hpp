@@ -1,0 +1,38 @@
+#pragma once
+// The select-core stage's options and result (select_core.hpp), without the clipped dual's
+// headers, so that the pipeline's header can carry them.
+#include <cstddef>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+#include "dualhex/geometry/hex_output.hpp"
+
+namespace dualhex::mesher {
+
+struct CoreOptions {
+    double margin = 0.1;  ///< corners at >= margin * (mean edge of the hex) inside the surface
+};
+
+struct CoreSelection {
+    geometry::HexMesh mesh;                ///< the core (may be empty)
+    std::vector<std::uint32_t> dual_hex;   ///< (core hexes): the dual hex each core hex is
+    std::size_t selected_by_rule = 0;      ///< hexes with score > 0
+    std::size_t repair_added = 0, repair_removed = 0;
+    bool repair_manifold = false;          ///< the repaired selection's boundary is a manifold
+    std::size_t repair_remaining_defects = 0;  ///< non-manifold edges + vertices left
+    std::vector<std::size_t> kept_components;     ///< hexes per kept component, decreasing
+    std::vector<std::size_t> dropped_components;  ///< hexes per dropped component, decreasing
+    /// Interior edges of the core (not on its boundary) with != 4 hexes: valence -> count.
+    /// The pad leaves them as they are (the schemes' valences).
+    std::map<int, std::size_t> singular_edge_valences;
+};
+
+/// Thrown by the pipeline when no dual hex qualifies for the core: the surface is too thin
+/// for the octree's resolution (a larger max depth or a smaller thickness factor may help).
+class EmptyCoreError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace dualhex::mesher

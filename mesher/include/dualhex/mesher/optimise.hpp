@@ -1,0 +1,63 @@
+#pragma once
+// Stage "optimise": move vertices, under their roles, to untangle and then to raise the
+// minimum scaled Jacobian.
+//
+// Input : the mesh (points (N, 3), hexes (M, 8) VTK order), its roles (N) and feature
+//         curves (constrained_position.hpp), the surface's tree, its quality state.
+// Output: the mesh with moved points (ids unchanged) and its quality state; the figures.
+// Contract: the inverted count is never larger than the input's and the minimum scaled
+//         Jacobian never lower; Surface vertices end on the surface (their closest point),
+//         Curve vertices on their polyline, Corner vertices where they were. Bounded by
+//         sweeps and by time_limit_ms of CPU time (checked between sweeps; phase 1 gets at
+//         most half of it).
+// Errors: std::invalid_argument from check_constraints.
+//
+// Phase 1, untangle (only if some hex is inverted): the barrier energy f_eps of
+// Garanzha et al. 2021 (mesher/src/hex_energy.hpp) over the 8 corner tets of every hex
+// near an inverted one (2 vertex rings), minimised by Gauss-Seidel sweeps of per-vertex
+// gradient steps (restricted to the vertex's domain, backtracking until the local energy
+// decreases); after each sweep eps is decreased by the paper's rule from the energy
+// decrease and the smallest det J; after 25 sweeps without fewer inverted hexes the region
+// grows by a ring around what is still inverted (up to 4 rings, eps restarted), then it
+// stops; it also stops when nothing is inverted. The phase is kept only if it does not break the
+// contract (else the points are restored).
+// Phase 2, quality: sweeps over the vertices of the hexes below min_quality, worst first;
+// per vertex three candidate moves (down the barrier gradient, up the numerical gradient
+// of the local minimum scaled Jacobian, towards the mean of its hexes' centroids) with
+// step halving; the best is taken only if it lowers the number of inverted hexes at the
+// vertex, or keeps it and raises their minimum scaled Jacobian. So no sweep can break the
+// contract. A vertex is retried only after a vertex of one of its hexes moved. Stops when
+// the minimum reaches min_quality, a sweep moves nothing, or 10 sweeps in a row did not
+// raise the minimum by 1e-4.
+#include <cstddef>
+
+#include "dualhex/geometry/aabb_tree.hpp"
+#include "dualhex/geometry/hex_output.hpp"
+#include "dualhex/mesher/constrained_position.hpp"
+#include "dualhex/mesher/quality_state.hpp"
+#include "dualhex/mesher/vertex_constraints.hpp"
+
+namespace dualhex::mesher {
+
+struct OptimiseOptions {
+    double min_quality = 0.5;   ///< target minimum scaled Jacobian
+    int untangle_sweeps = 200;
+    int quality_sweeps = 100;
+    double time_limit_ms = 0;  ///< process CPU time, checked between sweeps; 0: none (deterministic)
+};
+
+struct OptimiseResult {
+    std::size_t inverted_before = 0, inverted_after = 0;
+    double min_before = 0, min_after = 0;
+    int untangle_sweeps = 0;      ///< done (0: nothing inverted)
+    bool untangle_kept = false;   ///< phase 1 ran and was kept
+    int quality_sweeps = 0;       ///< done
+    std::size_t moves = 0;        ///< accepted vertex moves of phase 2
+    bool reached_target = false;  ///< min_after >= min_quality
+    bool hit_time_limit = false;
+};
+
+OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& constraints, const geometry::AabbTree& tree,
+                             const FeatureCurves& curves, const OptimiseOptions& options, QualityState& state);
+
+}  // namespace dualhex::mesher

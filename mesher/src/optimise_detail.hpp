@@ -1,0 +1,44 @@
+#pragma once
+// Internal to the optimise stage: what its two phases share.
+#include <ctime>
+#include <cstddef>
+#include <vector>
+
+#include "dualhex/geometry/hex_output.hpp"
+#include "dualhex/mesher/constrained_position.hpp"
+#include "hex_energy.hpp"
+
+namespace dualhex::mesher::detail {
+
+struct OptimiseContext {
+    geometry::HexMesh& mesh;
+    const VertexDomain& domain;
+    const VertexHexes& incidence;
+    std::vector<double>& sj;  ///< (hexes) kept current by every accepted move
+    std::clock_t deadline;  ///< process CPU time (the stage is single-threaded; fair on a loaded machine)
+
+    [[nodiscard]] bool out_of_time() const { return std::clock() > deadline; }
+};
+
+/// Of the hexes at v, with v at x: how many are inverted (SJ <= 0 or NaN), their minimum SJ.
+struct LocalQuality {
+    std::size_t inverted = 0;
+    double min = 1;
+    [[nodiscard]] bool better_than(const LocalQuality& o) const {
+        return inverted < o.inverted || (inverted == o.inverted && min > o.min + 1e-12);
+    }
+};
+[[nodiscard]] LocalQuality local_quality(const OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x);
+
+/// Moves v to x and refreshes sj of its hexes.
+void move_vertex(OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x);
+
+/// Mean edge length of the hexes at v (the step scale).
+[[nodiscard]] double local_size(const OptimiseContext& c, const BarrierEnergy& energy, std::size_t v);
+
+/// Phase 1 (optimise.hpp); returns sweeps done.
+int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps);
+/// Phase 2 (optimise.hpp); returns accepted moves, sweeps done in `sweeps`.
+std::size_t quality_phase(OptimiseContext& c, BarrierEnergy& energy, double target, int max_sweeps, int& sweeps);
+
+}  // namespace dualhex::mesher::detail

@@ -1,0 +1,170 @@
+// The select-core stage (select_core.hpp).
+#include "dualhex/mesher/select_core.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "dualhex/geometry/inside.hpp"
+#include "dualhex/geometry/manifold_repair.hpp"
+
+namespace dualhex::mesher {
+namespace {
+
+int find_root(std::vector<int>& parent, int x) {
+    while (parent[static_cast<std::size_t>(x)] != x) {
+        int& p = parent[static_cast<std::size_t>(x)];
+        p = parent[static_cast<std::size_t>(p)];
+        x = p;
+    }
+    return x;
+}
+
+double mean_edge(const std::array<std::uint32_t, 8>& h, const std::vector<Eigen::Vector3d>& p) {
+    double sum = 0;
+    for (const auto& e : geometry::kHexEdgeCorners) sum += (p[h[e[0]]] - p[h[e[1]]]).norm();
+    return sum / 12.0;
+}
+
+}  // namespace
+
+EmbeddedDual embed_dual(const ClippedDual& dual, std::int64_t extent, const geometry::RootCube& root,
+                        const geometry::AabbTree& tree) {
+    const double ext = static_cast<double>(extent);
+    const std::size_t n = dual.points.size();
+    EmbeddedDual out;
+    out.points.reserve(n);
+    out.signed_distance.reserve(n);
+    for (const RationalPoint& rp : dual.points) {
+        const Eigen::Vector3d p =
+            root.origin + root.size * Eigen::Vector3d(rp.coordinate(0, ext), rp.coordinate(1, ext), rp.coordinate(2, ext));
+        out.points.push_back(p);
+        out.signed_distance.push_back(std::sqrt(tree.squared_distance(p)));
+    }
+    // Signs: a ray-parity test at one point per region, then spread along dual edges: if
+    // |p - q| < d(p), the segment pq stays in the open ball around p that the surface does
+    // not meet, so q is on p's side.
+    std::vector<std::vector<std::uint32_t>> neighbours(n);
+    for (const auto& h : dual.hexes)
+        for (const auto& e : geometry::kHexEdgeCorners) {
+            neighbours[h[static_cast<std::size_t>(e[0])]].push_back(h[static_cast<std::size_t>(e[1])]);
+            neighbours[h[static_cast<std::size_t>(e[1])]].push_back(h[static_cast<std::size_t>(e[0])]);
+        }
+    std::vector<signed char> sign(n, 0);
+    std::vector<std::uint32_t> stack;
+    for (std::size_t start = 0; start < n; ++start) {
+        if (sign[start] != 0) continue;
+        sign[start] = geometry::is_inside(tree, out.points[start]) ? 1 : -1;
+        stack.assign(1, static_cast<std::uint32_t>(start));
+        while (!stack.empty()) {
+            const std::uint32_t p = stack.back();
+            stack.pop_back();
+            for (std::uint32_t q : neighbours[p])
+                if (sign[q] == 0 && (out.points[q] - out.points[p]).norm() < 0.999 * out.signed_distance[p]) {
+                    sign[q] = sign[p];
+                    stack.push_back(q);
+                }
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) out.signed_distance[i] *= sign[i];
+    return out;
+}
+
+std::vector<int> hex_face_components(const std::vector<std::array<int, 8>>& hexes, std::size_t vertex_count) {
+    (void)vertex_count;
+    struct FaceUse {
+        std::array<int, 4> key;
+        int hex;
+    };
+    std::vector<FaceUse> faces;
+    faces.reserve(hexes.size() * 6);
+    for (std::size_t h = 0; h < hexes.size(); ++h)
+        for (const auto& f : geometry::kHexFaces) {
+            std::array<int, 4> k{hexes[h][f[0]], hexes[h][f[1]], hexes[h][f[2]], hexes[h][f[3]]};
+            std::sort(k.begin(), k.end());
+            faces.push_back({k, static_cast<int>(h)});
+        }
+    std::sort(faces.begin(), faces.end(), [](const FaceUse& a, const FaceUse& b) { return a.key < b.key; });
+    std::vector<int> parent(hexes.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (std::size_t i = 1; i < faces.size(); ++i)
+        if (faces[i].key == faces[i - 1].key) {
+            const int a = find_root(parent, faces[i].hex), b = find_root(parent, faces[i - 1].hex);
+            if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+        }
+    // Roots are the smallest hex of their class; number classes by decreasing size.
+    std::vector<std::size_t> size(hexes.size(), 0);
+    for (std::size_t h = 0; h < hexes.size(); ++h) ++size[static_cast<std::size_t>(find_root(parent, static_cast<int>(h)))];
+    std::vector<int> roots;
+    for (std::size_t h = 0; h < hexes.size(); ++h)
+        if (size[h] > 0 && parent[h] == static_cast<int>(h)) roots.push_back(static_cast<int>(h));
+    std::stable_sort(roots.begin(), roots.end(),
+                     [&](int a, int b) { return size[static_cast<std::size_t>(a)] > size[static_cast<std::size_t>(b)]; });
+    std::vector<int> index_of(hexes.size(), -1);
+    for (std::size_t i = 0; i < roots.size(); ++i) index_of[static_cast<std::size_t>(roots[i])] = static_cast<int>(i);
+    std::vector<int> out(hexes.size());
+    for (std::size_t h = 0; h < hexes.size(); ++h)
+        out[h] = index_of[static_cast<std::size_t>(find_root(parent, static_cast<int>(h)))];
+    return out;
+}
+
+CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded, std::size_t input_components,
+                          const CoreOptions& options) {
+    CoreSelection out;
+    const std::size_t m = dual.hexes.size();
+    std::vector<std::array<int, 8>> cells(m);
+    std::vector<double> score(m);
+    std::vector<char> selected(m, 0);
+    for (std::size_t h = 0; h < m; ++h) {
+        const auto& hex = dual.hexes[h];
+        const double margin = options.margin * mean_edge(hex, embedded.points);
+        double s = INFINITY;
+        for (int c = 0; c < 8; ++c) {
+            cells[h][static_cast<std::size_t>(c)] = static_cast<int>(hex[static_cast<std::size_t>(c)]);
+            s = std::min(s, embedded.signed_distance[hex[static_cast<std::size_t>(c)]] - margin);
+        }
+        score[h] = s;
+        selected[h] = s > 0 ? 1 : 0;
+        out.selected_by_rule += static_cast<std::size_t>(selected[h]);
+    }
+    const geometry::ManifoldRepairResult repair =
+        geometry::repair_manifold_selection(cells, dual.points.size(), selected, score);
+    for (const auto& c : repair.changes) (c.selected ? out.repair_added : out.repair_removed) += 1;
+    out.repair_manifold = repair.manifold();
+    out.repair_remaining_defects = repair.remaining.non_manifold_edges.size() + repair.remaining.non_manifold_vertices.size();
+
+    std::vector<std::array<int, 8>> kept;
+    std::vector<std::uint32_t> kept_dual;
+    for (std::size_t h = 0; h < m; ++h)
+        if (repair.selected[h]) {
+            kept.push_back(cells[h]);
+            kept_dual.push_back(static_cast<std::uint32_t>(h));
+        }
+    const std::vector<int> component = hex_face_components(kept, dual.points.size());
+    std::vector<std::size_t> sizes;
+    for (int c : component) {
+        if (static_cast<std::size_t>(c) >= sizes.size()) sizes.resize(static_cast<std::size_t>(c) + 1, 0);
+        ++sizes[static_cast<std::size_t>(c)];
+    }
+    const std::size_t keep = std::max<std::size_t>(1, input_components);
+    for (std::size_t c = 0; c < sizes.size(); ++c) (c < keep ? out.kept_components : out.dropped_components).push_back(sizes[c]);
+
+    std::vector<int> new_id(dual.points.size(), -1);
+    for (std::size_t h = 0; h < kept.size(); ++h) {
+        if (static_cast<std::size_t>(component[h]) >= keep) continue;
+        std::array<int, 8> q{};
+        for (std::size_t i = 0; i < 8; ++i) {
+            int& id = new_id[static_cast<std::size_t>(kept[h][i])];
+            if (id < 0) {
+                id = static_cast<int>(out.mesh.points.size());
+                out.mesh.points.push_back(embedded.points[static_cast<std::size_t>(kept[h][i])]);
+            }
+            q[i] = id;
+        }
+        out.mesh.hexes.push_back(q);
+        out.dual_hex.push_back(kept_dual[h]);
+    }
+    return out;
+}
+
+}  // namespace dualhex::mesher
