@@ -5,6 +5,32 @@
 
 namespace dualhex::geometry {
 
+namespace {
+// Control bytes shown as \xNN: a NUL or an escape sequence in a file name cannot cut or
+// garble the message.
+std::string printable(const std::string& text) {
+    std::string out;
+    for (const char ch : text) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (c >= 0x20 && c != 0x7f) {
+            out += ch;
+        } else {
+            static const char* hex = "0123456789abcdef";
+            out += {'\\', 'x', hex[c >> 4], hex[c & 15]};
+        }
+    }
+    return out;
+}
+}  // namespace
+
+SurfaceError::SurfaceError(std::string file, const std::string& message)
+    : std::runtime_error(file.empty() ? printable(message) : printable(file) + ": " + printable(message)),
+      file_(std::move(file)) {}
+
+SurfaceError::SurfaceError(std::string file, std::int64_t line, const std::string& message)
+    : std::runtime_error(printable(file) + ":" + std::to_string(line) + ": " + printable(message)),
+      file_(std::move(file)) {}
+
 EdgeCheck check_edges(const TriangleSurface& s) {
     // Directed half-edges sorted by undirected key; runs of equal keys are one edge.
     struct Half {
