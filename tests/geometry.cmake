@@ -16,3 +16,6 @@ if(DUALHEX_PYTHON3)
   set_tests_properties(geometry_meshio_readback PROPERTIES SKIP_RETURN_CODE 77)
 endif()
 dualhex_add_test(test_geometry_quality SOURCES test_geometry_quality.cpp DEPS dualhex::geometry)
+# Strict readers and the self-intersection check against hostile input (issue 15).
+dualhex_add_test(test_geometry_readers_hostile SOURCES test_geometry_readers_hostile.cpp DEPS dualhex::geometry)
+dualhex_add_test(test_geometry_self_intersection SOURCES test_geometry_self_intersection.cpp DEPS dualhex::geometry)

@@ -67,9 +67,13 @@ Eigen::AlignedBox3d bounding_box(const TriangleSurface& s) {
 }
 
 double signed_volume(const TriangleSurface& s) {
+    // Tetrahedra from a point of the surface, not from the origin: far from the origin the
+    // terms would be huge and cancel (a 0.001 cube at 1e4 came out with 10^4 times its volume).
+    if (s.vertices.empty()) return 0;
+    const Eigen::Vector3d o = s.vertices.front();
     double v = 0;
     for (const auto& t : s.triangles)
-        v += s.vertices[t[0]].dot(s.vertices[t[1]].cross(s.vertices[t[2]]));
+        v += (s.vertices[t[0]] - o).dot((s.vertices[t[1]] - o).cross(s.vertices[t[2]] - o));
     return v / 6.0;
 }
 
