@@ -93,6 +93,23 @@ std::string describe_edges(const TriangleSurface& s, const std::vector<EdgeUse>&
     return os.str();
 }
 
+namespace {
+// The floating-point stages (octree, distances, projection) need the model to span many
+// ulps of its coordinates and its squared size to stay clear of underflow.
+void check_scale(const TriangleSurface& s, const Eigen::AlignedBox3d& box) {
+    const double size = box.diagonal().norm();
+    const double far = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+    std::ostringstream os;
+    os.precision(3);
+    if (!(size >= kMinSurfaceSize) || size < kMinRelativeSize * far) {
+        os << "surface too small to mesh: bounding box diagonal " << size << " at distance " << far
+           << " from the origin (needs >= " << kMinSurfaceSize << " and >= " << kMinRelativeSize
+           << " times that distance)";
+        throw SurfaceError(s.source, os.str());
+    }
+}
+}  // namespace
+
 TriangleSurface clean_surface(TriangleSurface s, const SurfaceReadOptions& options, SurfaceReport* report) {
     SurfaceReport local;
     SurfaceReport& r = report ? *report : local;
@@ -159,6 +176,7 @@ TriangleSurface clean_surface(TriangleSurface s, const SurfaceReadOptions& optio
     r.vertices = s.vertices.size();
     r.triangles = s.triangles.size();
     r.bbox = bounding_box(s);
+    check_scale(s, r.bbox);
     return s;
 }
 

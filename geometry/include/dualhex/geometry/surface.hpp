@@ -87,6 +87,12 @@ struct SurfaceReport {
     std::vector<std::string> warnings;
 };
 
+/// The scale range a surface must be in (clean_surface refuses others): its bounding box
+/// diagonal at least kMinSurfaceSize and at least kMinRelativeSize times the largest
+/// coordinate magnitude (readers refuse coordinates beyond +-1e100).
+inline constexpr double kMinSurfaceSize = 1e-100;
+inline constexpr double kMinRelativeSize = 1e-9;
+
 struct SurfaceReadOptions {
     /// Refuse (throw SurfaceError) a surface with boundary or non-manifold edges.
     bool require_closed = true;
@@ -102,7 +108,8 @@ struct SurfaceReadOptions {
                                            SurfaceReport* report = nullptr);
 
 /// Validates an in-memory surface like read_surface does (indices in range, no repeated
-/// corner in a triangle, closed if required); drops unused vertices. Throws SurfaceError.
+/// corner in a triangle, closed if required, scale in range); drops unused vertices.
+/// Throws SurfaceError.
 [[nodiscard]] TriangleSurface clean_surface(TriangleSurface s, const SurfaceReadOptions& options = {},
                                             SurfaceReport* report = nullptr);
 
