@@ -158,6 +158,31 @@ TEST(SelfIntersections, AdjacentTrianglesMayShareOnlyWhatTheirIndicesShare) {
     EXPECT_NE(found.describe(s).find("1 degenerate triangle"), std::string::npos);
 }
 
+TEST(SelfIntersections, GivesUpRatherThanGoQuadratic) {
+    // A closed cone over a 400-gon: every side triangle's box holds the apex, so all 400
+    // overlap each other (160,000 candidate pairs); embedded all the same.
+    TriangleSurface cone;
+    const int n = 400;
+    cone.vertices.emplace_back(0, 0, 1);  // apex
+    cone.vertices.emplace_back(0, 0, 0);  // base centre
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * i / n;
+        cone.vertices.emplace_back(std::cos(a), std::sin(a), 0);
+    }
+    for (int i = 0; i < n; ++i) {
+        const int p = 2 + i, q = 2 + (i + 1) % n;
+        cone.triangles.push_back({0, p, q});
+        cone.triangles.push_back({1, q, p});
+    }
+    const auto full = find_self_intersections(cone);
+    EXPECT_TRUE(full.empty());
+    EXPECT_FALSE(full.gave_up);
+    const auto capped = find_self_intersections(cone, 5, 1000, 50'000);
+    EXPECT_TRUE(capped.gave_up);
+    EXPECT_FALSE(capped.empty());  // not decided is not "embedded"
+    EXPECT_NE(capped.describe(cone).find("gave up"), std::string::npos);
+}
+
 TEST(SelfIntersections, ReadSurfaceRefusesNamingTheFileAndPairs) {
     TempDir dir;
     const auto path = write_text(dir.file("overlap.off"), off_text(two_cubes(0.5)));

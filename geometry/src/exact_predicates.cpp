@@ -1,5 +1,7 @@
 #include "exact_predicates.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <gmpxx.h>
@@ -14,18 +16,55 @@ constexpr double kEps = 1.0 / 9007199254740992.0;  // 2^-53
 // bounds no longer hold: decide exactly.
 constexpr double kTinyPermanent = 1e-250;
 
-int sign(const mpq_class& v) { return sgn(v); }
+// Every finite double is an integer times 2^e (e >= -1074). Scaled by 2^-emin, the
+// smallest such exponent among `n` values, all become integers, exactly: integer
+// arithmetic (mpz) is much faster than rationals (mpq, which reduce by gcd). Returns
+// false if the exponents span so far that the scaling would overflow a double.
+template <int N>
+bool to_integers(const std::array<double, N>& x, std::array<mpz_class, N>& out) {
+    int emin = 1 << 20, emax = -(1 << 20);
+    for (double v : x) {
+        if (v == 0) continue;
+        int e = 0;
+        (void)std::frexp(v, &e);  // v = f 2^e, f in [0.5, 1): an integer times 2^(e - 53)
+        emin = std::min(emin, e - 53);
+        emax = std::max(emax, e);
+    }
+    if (emax - emin > 1000) return false;
+    for (std::size_t i = 0; i < x.size(); ++i) out[i] = x[i] == 0 ? 0.0 : std::ldexp(x[i], -emin);
+    return true;
+}
+
+template <class Num>
+int det3_sign(const Num (&m)[3][3]) {
+    const Num det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                    m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    return sgn(det);
+}
 
 int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                    const Eigen::Vector3d& d) {
+    const std::array<double, 12> x{a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), d.x(), d.y(), d.z()};
+    std::array<mpz_class, 12> z;
+    if (to_integers<12>(x, z)) {
+        mpz_class m[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int k = 0; k < 3; ++k) m[r][k] = z[static_cast<std::size_t>(3 * r + k)] - z[static_cast<std::size_t>(9 + k)];
+        return det3_sign(m);
+    }
     mpq_class m[3][3];
-    const Eigen::Vector3d* rows[3] = {&a, &b, &c};
     for (int r = 0; r < 3; ++r)
-        for (int k = 0; k < 3; ++k) m[r][k] = mpq_class((*rows[r])[k]) - mpq_class(d[k]);
-    const mpq_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                          m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    return sign(det);
+        for (int k = 0; k < 3; ++k) m[r][k] = mpq_class(x[static_cast<std::size_t>(3 * r + k)]) - mpq_class(x[static_cast<std::size_t>(9 + k)]);
+    return det3_sign(m);
+}
+
+int orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy) {
+    const std::array<double, 6> x{ax, ay, bx, by, cx, cy};
+    std::array<mpz_class, 6> z;
+    if (to_integers<6>(x, z)) return sgn(mpz_class((z[0] - z[4]) * (z[3] - z[5]) - (z[1] - z[5]) * (z[2] - z[4])));
+    const mpq_class det = (mpq_class(ax) - mpq_class(cx)) * (mpq_class(by) - mpq_class(cy)) -
+                          (mpq_class(ay) - mpq_class(cy)) * (mpq_class(bx) - mpq_class(cx));
+    return sgn(det);
 }
 
 }  // namespace
@@ -53,9 +92,7 @@ int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
     const double det = l - r, permanent = std::fabs(l) + std::fabs(r);
     const double bound = (3.0 + 16.0 * kEps) * kEps * permanent;
     if (permanent > kTinyPermanent && std::isfinite(permanent) && std::fabs(det) > bound) return det > 0 ? 1 : -1;
-    const mpq_class det_q = (mpq_class(ax) - mpq_class(cx)) * (mpq_class(by) - mpq_class(cy)) -
-                            (mpq_class(ay) - mpq_class(cy)) * (mpq_class(bx) - mpq_class(cx));
-    return sign(det_q);
+    return orient2d_exact(ax, ay, bx, by, cx, cy);
 }
 
 }  // namespace dualhex::geometry::exact

@@ -2,7 +2,8 @@
 // Exact orientation predicates on double coordinates: a floating-point evaluation whose
 // error bound (Shewchuk's static bound for the plain determinant) decides the sign when it
 // can, else the determinant in exact rational arithmetic (GMP; every double is a dyadic
-// rational, so the conversion is exact). The sign returned is always the true sign.
+// rational, so the conversion is exact; scaled to integers, mpz, when the exponents allow).
+// The sign returned is always the true sign.
 #include <Eigen/Core>
 
 namespace dualhex::geometry::exact {

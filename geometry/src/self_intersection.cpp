@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <sstream>
 
-#include "dualhex/geometry/aabb_tree.hpp"
 #include "exact_predicates.hpp"
 
 namespace dualhex::geometry {
@@ -122,13 +121,48 @@ bool improper(const TriangleSurface& s, int ta, int tb) {
     }
 }
 
-Eigen::AlignedBox3d padded_box(const Tri& t) {
-    Eigen::AlignedBox3d box;
-    for (const auto& p : t) box.extend(p);
-    const double scale = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
-    const Eigen::Vector3d pad = Eigen::Vector3d::Constant(1e-9 * scale + 1e-290);
-    return {box.min() - pad, box.max() + pad};
-}
+// Candidate pairs by sort and sweep over the triangles' bounding boxes: boxes of doubles
+// compare exactly (min/max round nothing), so no pair that touches can be missed. (The AABB
+// tree's triangles_in_box was the first choice; its floating-point triangle-box test took
+// two thirds of the time and needed padded boxes to stay conservative.)
+struct BoxSweep {
+    struct Entry {
+        Eigen::AlignedBox3d box;
+        int triangle;
+    };
+    std::vector<Entry> sorted;  // by box.min()[axis], contiguous for the scan
+    int axis = 0;               // the longest extent of the whole surface: fewest overlaps
+
+    explicit BoxSweep(const TriangleSurface& s) {
+        sorted.resize(s.triangles.size());
+        Eigen::AlignedBox3d all;
+        for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+            sorted[t].triangle = static_cast<int>(t);
+            for (int c : s.triangles[t]) sorted[t].box.extend(s.vertices[c]);
+            all.extend(sorted[t].box);
+        }
+        if (!sorted.empty()) all.diagonal().maxCoeff(&axis);
+        std::sort(sorted.begin(), sorted.end(),
+                  [&](const Entry& a, const Entry& b) { return a.box.min()[axis] < b.box.min()[axis]; });
+    }
+    // Calls visit(a, b) for every pair of boxes that share a point until it returns false;
+    // returns false if more than `budget` boxes were scanned (not every pair was visited).
+    template <class Visit>
+    bool pairs(std::size_t budget, Visit&& visit) const {
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        for (std::size_t i = 0; i < sorted.size(); ++i) {
+            const auto& bi = sorted[i].box;
+            for (std::size_t j = i + 1; j < sorted.size() && sorted[j].box.min()[axis] <= bi.max()[axis]; ++j) {
+                if (budget-- == 0) return false;
+                const auto& bj = sorted[j].box;
+                if (bj.min()[u] <= bi.max()[u] && bi.min()[u] <= bj.max()[u] && bj.min()[v] <= bi.max()[v] &&
+                    bi.min()[v] <= bj.max()[v] && !visit(sorted[i].triangle, sorted[j].triangle))
+                    return true;
+            }
+        }
+        return true;
+    }
+};
 
 void list_triangle(std::ostringstream& os, const TriangleSurface& s, int t) {
     const auto& v = s.triangles[t];
@@ -144,7 +178,8 @@ bool triangles_intersect(const Tri& a, const Tri& b) {
     return false;
 }
 
-SelfIntersections find_self_intersections(const TriangleSurface& s, std::size_t max_listed, std::size_t stop_after) {
+SelfIntersections find_self_intersections(const TriangleSurface& s, std::size_t max_listed, std::size_t stop_after,
+                                          std::size_t max_candidates) {
     SelfIntersections out;
     auto corners = [&](int t) {
         const auto& v = s.triangles[static_cast<std::size_t>(t)];
@@ -155,24 +190,21 @@ SelfIntersections find_self_intersections(const TriangleSurface& s, std::size_t 
         if (degenerate(corners(t)) && out.degenerate_count++ < max_listed) out.degenerate.push_back(t);
     if (out.degenerate_count > 0 || n == 0) return out;  // the pair tests need proper triangles
 
-    const AabbTree tree(s);
-    for (int t = 0; t < n && !out.stopped_early; ++t) {
-        std::vector<int> near = tree.triangles_in_box(padded_box(corners(t)));
-        std::sort(near.begin(), near.end());
-        for (int u : near) {
-            if (u <= t || !improper(s, t, u)) continue;
-            if (out.pair_count++ < max_listed) out.pairs.push_back({t, u});
-            if (out.pair_count >= stop_after) {
-                out.stopped_early = true;
-                break;
-            }
-        }
-    }
+    const std::size_t budget = max_candidates > 0 ? max_candidates : 50'000'000 + 200 * static_cast<std::size_t>(n);
+    const bool complete = BoxSweep(s).pairs(budget, [&](int a, int b) {
+        if (!improper(s, std::min(a, b), std::max(a, b))) return true;
+        if (out.pair_count++ < max_listed) out.pairs.push_back({std::min(a, b), std::max(a, b)});
+        out.stopped_early = out.pair_count >= stop_after;
+        return !out.stopped_early;
+    });
+    out.gave_up = !complete;
     return out;
 }
 
 std::string SelfIntersections::describe(const TriangleSurface& s) const {
     std::ostringstream os;
+    if (gave_up && degenerate_count == 0 && pair_count == 0)
+        return "self-intersection check gave up: far too many triangles with overlapping bounding boxes";
     if (degenerate_count > 0) {
         os << degenerate_count << " degenerate triangle" << (degenerate_count == 1 ? "" : "s")
            << " (collinear corners), e.g. ";

@@ -8,6 +8,7 @@
 // record and its byte offset instead of a line).
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -69,6 +70,7 @@ template <class Fail>
 void add_polygon(PolygonSoup& soup, const std::vector<std::int64_t>& ids, Fail&& fail) {
     if (ids.size() < 3) fail("face with " + std::to_string(ids.size()) + " corners (at least 3 needed)");
     const auto n = static_cast<std::int64_t>(soup.points.size());
+    if (n > std::numeric_limits<int>::max()) fail("more vertices than int indices can address");
     for (std::size_t c = 0; c < ids.size(); ++c) {
         if (ids[c] < 0 || ids[c] >= n)
             fail("vertex index " + std::to_string(ids[c]) + " out of range [0, " + std::to_string(n) + ")");

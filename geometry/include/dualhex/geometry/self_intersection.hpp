@@ -9,8 +9,8 @@
 //         count); without common vertices not at all. Two triangles with the same three
 //         vertices always count.
 // Every decision is a sign of an exact orientation predicate (exact_predicates.hpp): no
-// tolerance. Candidates come from the AABB tree (query boxes slightly enlarged, so the
-// floating-point box test can only add candidates, never lose one).
+// tolerance. Candidates are the pairs whose bounding boxes overlap (exact comparisons of
+// doubles), found by sort and sweep along x.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -25,15 +25,20 @@ struct SelfIntersections {
     std::vector<std::array<int, 2>> pairs;       ///< (a, b) with a < b, at most max_listed
     std::size_t pair_count = 0;                  ///< pairs found (the search stops at stop_after)
     bool stopped_early = false;
-    [[nodiscard]] bool empty() const { return degenerate_count == 0 && pair_count == 0; }
+    /// The candidate pairs exceeded the budget (bounding boxes overlapping far more than
+    /// on any sane surface, e.g. thousands of triangles around one vertex): not decided.
+    bool gave_up = false;
+    [[nodiscard]] bool empty() const { return degenerate_count == 0 && pair_count == 0 && !gave_up; }
     /// "2 pairs of intersecting triangles, e.g. 3 (v 0 1 2) x 17 (v 5 6 7), ..."
     [[nodiscard]] std::string describe(const TriangleSurface& s) const;
 };
 
 /// Finds degenerate triangles, then (only if there are none) intersecting pairs; lists the
-/// first `max_listed` of each and stops searching after `stop_after` pairs.
+/// first `max_listed` of each and stops searching after `stop_after` pairs, or (gave_up)
+/// after scanning `max_candidates` boxes (0: 5e7 + 200 F), so hostile input cannot make
+/// it quadratic.
 [[nodiscard]] SelfIntersections find_self_intersections(const TriangleSurface& s, std::size_t max_listed = 5,
-                                                        std::size_t stop_after = 1000);
+                                                        std::size_t stop_after = 1000, std::size_t max_candidates = 0);
 
 /// True iff the closed triangles (a0 a1 a2) and (b0 b1 b2) share a point (exact).
 /// Precondition: neither is degenerate.
