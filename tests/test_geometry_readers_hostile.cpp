@@ -121,6 +121,9 @@ TEST(HostileOff, CountsAreCheckedAgainstTheFileSize) {
     expect_error(write_text(dir.file("tail.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
                  "tail.off:7: unexpected content after the last face");
     expect_error(write_text(dir.file("bin.off"), "OFF BINARY\n"), "binary OFF is not supported");
+    expect_error(write_text(dir.file("four.off"), "OFF\n3 1 0\n0 0 0 1\n1 0 0\n0 1 0\n3 0 1 2\n"),
+                 "four.off:3: vertex 0: expected 'x y z'");
+    expect_error(write_text(dir.file("4off.off"), "4OFF\n3 1 0\n"), "expected 'OFF', found '4OFF'");
 }
 
 TEST(HostilePly, PropertyBeforeElementAndMissingEndHeaderAreErrors) {

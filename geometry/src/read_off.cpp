@@ -1,5 +1,6 @@
-// Strict OFF reader: "OFF" (or COFF/NOFF/CNOFF/4OFF-free variants with extra per-vertex
-// values), the counts "V F E", V vertex lines "x y z [extra numbers]", F face lines
+// Strict OFF reader: "OFF" (vertex lines exactly "x y z"; COFF/NOFF/CNOFF and the ST
+// variants add colour, normal or texture numbers after x y z, checked and ignored; 4OFF,
+// nOFF and binary OFF are refused), the counts "V F E", V vertex lines, F face lines
 // "n i1 .. in [colour numbers]". '#' comments and blank lines anywhere. Counts are checked
 // against the bytes left before anything is reserved; nothing but comments may follow.
 #include "surface_parse.hpp"
@@ -51,7 +52,7 @@ PolygonSoup read_off(std::string_view bytes, const std::string& source) {
         if (!cur.next_content(line))
             cur.fail("file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
         fields = split_fields(line);
-        if (fields.size() < 3 || (!extra_vertex_values && fields.size() > 4))
+        if (fields.size() < 3 || (!extra_vertex_values && fields.size() > 3))
             cur.fail("vertex " + std::to_string(v) + ": expected 'x y z', found " + quoted(line));
         Eigen::Vector3d p;
         for (int c = 0; c < 3; ++c) p[c] = parse_coordinate(fields[static_cast<std::size_t>(c)], cur, "coordinate");
