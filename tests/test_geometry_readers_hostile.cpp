@@ -65,13 +65,15 @@ std::string cube_obj(int bad_vertex = -1, const std::string& bad = {}) {
 TEST(HostileObj, UnparsableVertexIsAnErrorWithLineAndValue) {
     TempDir dir;
     // Line 1 is the comment, so vertex 3 (0-based) is on line 5.
-    for (const char* bad : {"nan", "inf", "1e400", "-inf", "0x10", "1,5", "++1", "1.5.2", "", "1e-400"}) {
+    for (const char* bad : {"nan", "inf", "1e400", "1e300", "-inf", "0x10", "1,5", "++1", "1.5.2", "", "1e-400"}) {
         SCOPED_TRACE(bad);
         const std::string value = bad;
         const auto path = write_text(dir.file("bad.obj"), cube_obj(3, "1 " + (value.empty() ? "" : value + " ") + "0"));
         const std::string msg = error_of(path);
         EXPECT_NE(msg.find(path + ":5: "), std::string::npos) << msg;
-        if (!value.empty()) EXPECT_NE(msg.find("'" + value + "'"), std::string::npos) << msg;
+        if (!value.empty()) {
+            EXPECT_NE(msg.find("'" + value + "'"), std::string::npos) << msg;
+        }
     }
     // The same file with a valid vertex reads: the test above fails for the value only.
     EXPECT_EQ(read_surface(write_text(dir.file("good.obj"), cube_obj())).vertices.size(), 8u);
