@@ -3,7 +3,7 @@
 // (DIR/weak) and the 14 crossing variants (DIR/variants), each directory with its manifest
 // (format and checker: proofs/README.md). The certificates are untrusted output;
 // `dualhex-proof-checker DIR/manifest` (and DIR/weak/manifest, DIR/variants/manifest)
-// re-checks them.
+// re-checks them. Without --force DIR must not exist or be empty.
 #include <iostream>
 
 #include "commands.hpp"
@@ -23,11 +23,13 @@ void register_certify(CLI::App& app) {
     auto opt = std::make_shared<Options>();
     sub->add_option("--out", opt->out, "Directory to write the certificates and the manifest into")->required();
     sub->add_option("--elements", opt->elements, "Element directory (default: the element library's default)");
-    sub->add_flag("--force", opt->force, "Overwrite existing manifests in DIR, DIR/weak, DIR/variants");
+    sub->add_flag("--force", opt->force, "Write into DIR even if it is not empty (overwriting certificates and manifests in it)");
     add_json_flag(*sub, opt->json);
     sub->callback([opt] {
         const std::filesystem::path dir = opt->out;
-        for (const char* sub_dir : {"", "weak", "variants"}) check_output(dir / sub_dir / "manifest", opt->force);
+        // Before any work: nothing in DIR may be overwritten without --force (the files it
+        // writes are named by their contents' ranges, so none can be checked one by one).
+        check_output_directory(dir, opt->force);
         const ElementLibrary library =
             opt->elements.empty() ? ElementLibrary::load_default() : ElementLibrary::load(opt->elements);
         const CertifyResult result = certify_library(library, dir);

@@ -51,9 +51,7 @@ void run_verify(const VerifyOptions& opt) {
         return;
     }
 
-    if (!opt.certify.empty())
-        for (const char* sub : {"", "weak", "variants"})
-            check_output(std::filesystem::path(opt.certify) / sub / "manifest", opt.force);
+    if (!opt.certify.empty()) check_output_directory(opt.certify, opt.force);  // as dualhex certify
     const auto t_all = std::chrono::steady_clock::now();
     nlohmann::json checks = nlohmann::json::array();
     int passed = 0, failed = 0, skipped = 0;
@@ -136,7 +134,7 @@ void register_verify(CLI::App& app) {
     sub->add_option("--only", opt->only, "Run only checks whose name contains this text (repeatable)");
     sub->add_option("--certify", opt->certify,
                     "After a passing run, write certificates (as `dualhex certify`) into DIR, DIR/weak, DIR/variants");
-    sub->add_flag("--force", opt->force, "With --certify: overwrite existing manifests");
+    sub->add_flag("--force", opt->force, "With --certify: write into DIR even if it is not empty");
     sub->callback([opt] { run_verify(*opt); });
 }
 

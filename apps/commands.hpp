@@ -54,9 +54,21 @@ CLI::Option* add_json_flag(CLI::App& sub, bool& json);
 /// Adds `-o,--output FILE` (required) and `--force` to a command that writes a file.
 void add_output_options(CLI::App& sub, std::string& output, bool& force);
 
-/// Throws UsageError (exit 2) if `path` exists and not `force`: call it before the work
-/// so a refused overwrite costs nothing.
+/// Call before the work, so a refused output costs nothing. Throws UsageError (exit 2) if
+/// `path` exists and not `force`; InputError (exit 3, "path: why") if it cannot be
+/// written: an existing directory, an existing file that cannot be opened for writing,
+/// or (not existing) a parent directory that does not exist or cannot be written. Probes by opening the file
+/// without truncating it, or by creating and removing a scratch file beside it.
 void check_output(const std::filesystem::path& path, bool force);
+
+/// The same for an output directory that a command fills with files it names itself
+/// (certify): without `force` it must not exist or be empty (nothing in it may be
+/// overwritten); it must be (or be creatable as) a writable directory.
+void check_output_directory(const std::filesystem::path& dir, bool force);
+
+/// `text` with every byte that is not part of valid UTF-8 written as "\xNN": what JSON
+/// output does with file names (which may be any bytes) instead of failing.
+std::string utf8_escaped(const std::string& text);
 
 /// Opens `path` for writing. Refuses (UsageError, exit 2) to overwrite an existing file
 /// unless `force`; throws std::runtime_error if the file cannot be opened.
@@ -65,7 +77,8 @@ std::ofstream open_output(const std::filesystem::path& path, bool force);
 /// If `e` is a dualhex::InputError (malformed input file), "<file>:<line>: <message>".
 std::optional<std::string> input_error_message(const std::exception& e);
 
-/// Prints `j` on stdout (pretty, 2 spaces) followed by a newline.
+/// Prints `j` on stdout (pretty, 2 spaces) followed by a newline; strings (and keys) that
+/// are not valid UTF-8 are printed utf8_escaped, so the output never fails.
 void print_json(const nlohmann::json& j);
 
 }  // namespace dualhex::app

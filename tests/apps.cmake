@@ -17,3 +17,8 @@ add_test(NAME consumer_find_package
     -DSANITIZE=${DUALHEX_SANITIZE}
     -P ${CMAKE_CURRENT_SOURCE_DIR}/consumer/run_consumer_test.cmake)
 set_tests_properties(consumer_find_package PROPERTIES TIMEOUT 300 RUN_SERIAL FALSE)
+
+# The CLI against hostile inputs and outputs (issue 15), run as a process.
+dualhex_add_test(test_apps_hostile SOURCES test_apps_hostile.cpp DEPS nlohmann_json::nlohmann_json)
+target_compile_definitions(test_apps_hostile PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
+add_dependencies(test_apps_hostile dualhex)

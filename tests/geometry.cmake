@@ -32,3 +32,6 @@ target_compile_definitions(test_geometry_size_control PRIVATE DUALHEX_EXE="$<TAR
 add_dependencies(test_geometry_size_control dualhex)
 dualhex_add_test(test_geometry_cell_data SOURCES test_geometry_cell_data.cpp DEPS dualhex::mesher)
 dualhex_add_test(test_geometry_features SOURCES test_geometry_features.cpp DEPS dualhex::geometry)
+# Strict readers and the self-intersection check against hostile input (issue 15).
+dualhex_add_test(test_geometry_readers_hostile SOURCES test_geometry_readers_hostile.cpp DEPS dualhex::geometry)
+dualhex_add_test(test_geometry_self_intersection SOURCES test_geometry_self_intersection.cpp DEPS dualhex::geometry)

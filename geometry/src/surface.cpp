@@ -5,6 +5,32 @@
 
 namespace dualhex::geometry {
 
+namespace {
+// Control bytes shown as \xNN: a NUL or an escape sequence in a file name cannot cut or
+// garble the message.
+std::string printable(const std::string& text) {
+    std::string out;
+    for (const char ch : text) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (c >= 0x20 && c != 0x7f) {
+            out += ch;
+        } else {
+            static const char* hex = "0123456789abcdef";
+            out += {'\\', 'x', hex[c >> 4], hex[c & 15]};
+        }
+    }
+    return out;
+}
+}  // namespace
+
+SurfaceError::SurfaceError(std::string file, const std::string& message)
+    : std::runtime_error(file.empty() ? printable(message) : printable(file) + ": " + printable(message)),
+      file_(std::move(file)) {}
+
+SurfaceError::SurfaceError(std::string file, std::int64_t line, const std::string& message)
+    : std::runtime_error(printable(file) + ":" + std::to_string(line) + ": " + printable(message)),
+      file_(std::move(file)) {}
+
 EdgeCheck check_edges(const TriangleSurface& s) {
     // Directed half-edges sorted by undirected key; runs of equal keys are one edge.
     struct Half {
@@ -41,9 +67,13 @@ Eigen::AlignedBox3d bounding_box(const TriangleSurface& s) {
 }
 
 double signed_volume(const TriangleSurface& s) {
+    // Tetrahedra from a point of the surface, not from the origin: far from the origin the
+    // terms would be huge and cancel (a 0.001 cube at 1e4 came out with 10^4 times its volume).
+    if (s.vertices.empty()) return 0;
+    const Eigen::Vector3d o = s.vertices.front();
     double v = 0;
     for (const auto& t : s.triangles)
-        v += s.vertices[t[0]].dot(s.vertices[t[1]].cross(s.vertices[t[2]]));
+        v += (s.vertices[t[0]] - o).dot((s.vertices[t[1]] - o).cross(s.vertices[t[2]] - o));
     return v / 6.0;
 }
 
@@ -62,6 +92,23 @@ std::string describe_edges(const TriangleSurface& s, const std::vector<EdgeUse>&
     if (edges.size() > max_listed) os << ", ...";
     return os.str();
 }
+
+namespace {
+// The floating-point stages (octree, distances, projection) need the model to span many
+// ulps of its coordinates and its squared size to stay clear of underflow.
+void check_scale(const TriangleSurface& s, const Eigen::AlignedBox3d& box) {
+    const double size = box.diagonal().norm();
+    const double far = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+    std::ostringstream os;
+    os.precision(3);
+    if (!(size >= kMinSurfaceSize) || size < kMinRelativeSize * far) {
+        os << "surface too small to mesh: bounding box diagonal " << size << " at distance " << far
+           << " from the origin (needs >= " << kMinSurfaceSize << " and >= " << kMinRelativeSize
+           << " times that distance)";
+        throw SurfaceError(s.source, os.str());
+    }
+}
+}  // namespace
 
 TriangleSurface clean_surface(TriangleSurface s, const SurfaceReadOptions& options, SurfaceReport* report) {
     SurfaceReport local;
@@ -129,6 +176,7 @@ TriangleSurface clean_surface(TriangleSurface s, const SurfaceReadOptions& optio
     r.vertices = s.vertices.size();
     r.triangles = s.triangles.size();
     r.bbox = bounding_box(s);
+    check_scale(s, r.bbox);
     return s;
 }
 

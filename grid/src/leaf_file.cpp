@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -41,7 +42,8 @@ int split_fields(std::string_view s, std::array<std::string_view, 5>& out) {
 std::int64_t parse_integer(std::string_view token, std::string_view text, const std::string& source, int line) {
     std::int64_t v = 0;
     const char* first = token.data();
-    if (token.size() > 1 && token[0] == '+') ++first;  // from_chars rejects '+'; allow it
+    // from_chars rejects '+'; allow one before a digit ("+3"), never before a sign ("+-0").
+    if (token.size() > 1 && token[0] == '+' && token[1] >= '0' && token[1] <= '9') ++first;
     const auto [end, ec] = std::from_chars(first, token.data() + token.size(), v);
     if (ec == std::errc::result_out_of_range)
         throw InputError(source, line, "integer out of range: '" + std::string(token) + "' in '" + std::string(text) + "'");
@@ -83,6 +85,9 @@ LeafGrid parse_leaves(std::string_view text, const std::string& source) {
         if (eol == std::string_view::npos) eol = text.size();
         std::string_view content = text.substr(pos, eol - pos);
         pos = eol + 1;
+        // Lines are numbered with int (InputError, LeafGrid): refuse rather than overflow.
+        if (line == std::numeric_limits<int>::max())
+            throw InputError(source, 0, "more than " + std::to_string(line) + " lines");
         ++line;
         if (const auto hash = content.find('#'); hash != std::string_view::npos) content = content.substr(0, hash);
         content = trim(content);
@@ -95,6 +100,11 @@ LeafGrid parse_leaves(std::string_view text, const std::string& source) {
 
 LeafGrid read_leaf_file(const std::filesystem::path& path) {
     const std::string name = path.string();
+    // A FIFO or device (/dev/zero) would block or never end: only regular files are read.
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) throw InputError(name, 0, "cannot open leaf file: no such file");
+    if (!std::filesystem::is_regular_file(status)) throw InputError(name, 0, "not a regular file");
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"), &std::fclose);
     if (!file) throw InputError(name, 0, "cannot open leaf file");
     std::string text;

@@ -1,20 +1,25 @@
 #pragma once
 // A closed triangle surface as plain arrays (Eigen points, int triangles), read from
-// OBJ, OFF, STL (ASCII or binary) or PLY through OpenMesh's readers.
+// OBJ, OFF, STL (ASCII or binary) or PLY (ASCII or binary) by dualhex's own strict readers
+// (geometry/src/read_*.cpp), in double precision.
 //
-// Input : a file path (format by extension, as OpenMesh decides).
+// Input : a regular file (format by extension: .obj, .off, .stl, .ply).
 // Output: a TriangleSurface whose every vertex is used by some triangle, and a
 //         SurfaceReport (counts, bounding box, closedness, warnings).
-// Errors: SurfaceError (what() = "file: message") for an unreadable file, an empty
-//         mesh, degenerate index lists, and — unless allowed — an open or non-manifold
-//         surface (the message gives the number of bad edges and the first few, with the
-//         positions of their endpoints). Never a crash on bad input.
+// Errors: SurfaceError, what() = "file:line: what, 'value'" for anything the reader cannot
+//         parse (a number that is not a finite decimal, a count the file cannot hold, a
+//         truncated file, an index out of range; binary formats name the record and its
+//         byte offset), "file: message" for an empty mesh, a degenerate triangle, an open
+//         or non-manifold surface (unless allowed; the message names the first bad edges)
+//         or a self-intersecting one (the first intersecting triangle pairs). Never a
+//         crash, a hang or an allocation the file size does not justify.
 //
 // Polygons with more than 3 corners are split into a triangle fan (OFF/OBJ/PLY allow
 // them). Unused vertices (e.g. the duplicate in the gao_* files) are dropped with a
-// warning; STL vertices are welded by OpenMesh's STL reader (exact float match).
+// warning; STL corners are welded by exact equality of the parsed values.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,8 +39,11 @@ struct TriangleSurface {
 
 class SurfaceError : public std::runtime_error {
 public:
-    SurfaceError(std::string file, const std::string& message)
-        : std::runtime_error(file.empty() ? message : file + ": " + message), file_(std::move(file)) {}
+    /// what() = "file: message" ("message" if `file` is empty). Control bytes and
+    /// non-ASCII bytes of `file` are shown as \xNN, so a NUL cannot cut the message.
+    SurfaceError(std::string file, const std::string& message);
+    /// what() = "file:line: message" (1-based line).
+    SurfaceError(std::string file, std::int64_t line, const std::string& message);
     [[nodiscard]] const std::string& file() const { return file_; }
 
 private:
@@ -79,11 +87,20 @@ struct SurfaceReport {
     std::vector<std::string> warnings;
 };
 
+/// The scale range a surface must be in (clean_surface refuses others): its bounding box
+/// diagonal at least kMinSurfaceSize and at least kMinRelativeSize times the largest
+/// coordinate magnitude (readers refuse coordinates beyond +-1e100).
+inline constexpr double kMinSurfaceSize = 1e-100;
+inline constexpr double kMinRelativeSize = 1e-9;
+
 struct SurfaceReadOptions {
     /// Refuse (throw SurfaceError) a surface with boundary or non-manifold edges.
     bool require_closed = true;
     /// Flip all triangles if the enclosed volume is negative (outward orientation).
     bool orient_outward = true;
+    /// Refuse a surface with degenerate (collinear-corner) or intersecting triangles,
+    /// decided with exact predicates (self_intersection.hpp). Only checked when closed.
+    bool reject_self_intersections = true;
 };
 
 /// Reads `path`; `report` (optional) receives counts, bbox, closedness and warnings.
@@ -91,7 +108,8 @@ struct SurfaceReadOptions {
                                            SurfaceReport* report = nullptr);
 
 /// Validates an in-memory surface like read_surface does (indices in range, no repeated
-/// corner in a triangle, closed if required); drops unused vertices. Throws SurfaceError.
+/// corner in a triangle, closed if required, scale in range); drops unused vertices.
+/// Throws SurfaceError.
 [[nodiscard]] TriangleSurface clean_surface(TriangleSurface s, const SurfaceReadOptions& options = {},
                                             SurfaceReport* report = nullptr);
 

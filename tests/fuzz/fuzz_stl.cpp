@@ -1,0 +1,6 @@
+// libFuzzer harness: the strict STL reader (geometry/src/read_stl.cpp), see fuzz_surface.hpp.
+#include "fuzz_surface.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    return dualhex::fuzz::read_surface_bytes(data, size, dualhex::geometry::detail::read_stl, "fuzz.stl");
+}
