@@ -3,6 +3,8 @@
 #include <chrono>
 #include <ostream>
 
+#include <tbb/parallel_for.h>
+
 #include "dualhex/checkers/cube_window.hpp"
 #include "dualhex/checkers/periodic_configuration.hpp"
 #include "dualhex/grid/configurations.hpp"
@@ -37,12 +39,18 @@ ExhaustiveResult run_exhaustive(const TransitionRule& rule, const ElementLibrary
         s.fine = c.fine;
         res.classes.push_back(s);
     }
+    // The 256 tori and windows are independent: checked in parallel, tallied in mask order.
+    res.periodic.resize(kConfigurationCount);
+    res.window.resize(kConfigurationCount);
+    tbb::parallel_for(0, kConfigurationCount, [&](int m) {
+        const auto mask = static_cast<std::uint8_t>(m);
+        res.periodic[static_cast<std::size_t>(m)] = check_periodic_configuration(mask, rule, library);
+        res.window[static_cast<std::size_t>(m)] = check_cube_window(mask, rule, library);
+    });
     for (int m = 0; m < kConfigurationCount; ++m) {
         const auto mask = static_cast<std::uint8_t>(m);
-        res.periodic.push_back(check_periodic_configuration(mask, rule, library));
-        res.window.push_back(check_cube_window(mask, rule, library));
-        const ConfigurationReport& p = res.periodic.back();
-        const ConfigurationReport& w = res.window.back();
+        const ConfigurationReport& p = res.periodic[static_cast<std::size_t>(m)];
+        const ConfigurationReport& w = res.window[static_cast<std::size_t>(m)];
         ClassSummary& s = res.classes[static_cast<std::size_t>(space.class_of(mask))];
         ++s.configurations;
         if (p.ok()) ++s.periodic_passed, ++res.periodic_passed;

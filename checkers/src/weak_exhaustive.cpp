@@ -4,6 +4,8 @@
 #include <chrono>
 #include <set>
 
+#include <tbb/parallel_for.h>
+
 #include "dualhex/checkers/periodic_configuration.hpp"
 #include "dualhex/grid/configurations.hpp"
 
@@ -51,23 +53,33 @@ LevelAssignment canonical(const LevelAssignment& levels) {
 WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const ElementLibrary& library) {
     const auto t0 = std::chrono::steady_clock::now();
     WeakExhaustiveResult r;
+    const std::vector<LevelAssignment> configurations = weak_configurations();
+    // Each configuration's torus and window are independent: checked in parallel, then
+    // tallied in configuration order (the same result for any thread count).
+    std::vector<ConfigurationReport> tori(configurations.size()), windows(configurations.size());
+    tbb::parallel_for(std::size_t{0}, configurations.size(), [&](std::size_t n) {
+        const LevelAssignment& lv = configurations[n];
+        tori[n] = check_periodic_levels(torus_levels(lv), 2, rule, library);
+        std::array<int, 8> levels{};
+        for (int b = 0; b < 8; ++b) levels[static_cast<std::size_t>(b)] = lv[static_cast<std::size_t>(b)];
+        windows[n] = check_window_levels(levels, rule, library);
+    });
     std::set<LevelAssignment> classes, three;
-    for (const LevelAssignment& lv : weak_configurations()) {
+    for (std::size_t n = 0; n < configurations.size(); ++n) {
+        const LevelAssignment& lv = configurations[n];
         ++r.configurations;
         const LevelAssignment key = canonical(lv);
         classes.insert(key);
         if (*std::max_element(lv.begin(), lv.end()) == 2) three.insert(key);
-        const ConfigurationReport report = check_periodic_levels(torus_levels(lv), 2, rule, library);
-        std::array<int, 8> levels{};
-        for (int b = 0; b < 8; ++b) levels[static_cast<std::size_t>(b)] = lv[static_cast<std::size_t>(b)];
-        const ConfigurationReport window = check_window_levels(levels, rule, library);
+        const ConfigurationReport& report = tori[n];
+        const ConfigurationReport& window = windows[n];
         r.periodic_passed += report.ok();
         r.window_passed += window.ok();
         if (report.ok() && window.ok())
             ++r.passed;
         else
             r.failures.push_back((report.ok() ? "window " + window.summary() : "torus " + report.summary()));
-        for (const auto& [name, n] : report.elements) r.elements[name] += n;
+        for (const auto& [name, count] : report.elements) r.elements[name] += count;
         if (!report.dual_edge_valences.empty())
             r.max_dual_edge_valence = std::max(r.max_dual_edge_valence, report.dual_edge_valences.rbegin()->first);
     }
