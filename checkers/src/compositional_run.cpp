@@ -5,7 +5,7 @@
 // Without an on_window observer the windows are checked class by class (window_classes.hpp):
 // one representative per congruence class gets the full check; every other window is built
 // and proved to be the exact image of its representative under a cube symmetry about g
-// (oriented_form below: its vertices and oriented cells, point by point). The check is
+// (oriented_form.hpp: its vertices and oriented cells, point by point). The check is
 // invariant under those symmetries (the window box and its interior are), so the member's
 // outcome is its representative's. A member that is not such an image, or whose
 // representative fails, gets the full check itself: the coverage is that of checking every
@@ -19,6 +19,7 @@
 #include <tbb/parallel_for.h>
 
 #include "compositional_windows.hpp"
+#include "oriented_form.hpp"
 #include "window_check.hpp"
 #include "window_classes.hpp"
 
@@ -37,31 +38,10 @@ struct Outcome {
 
 Outcome outcome_of(const ConfigurationReport& r) { return {r.ok(), r.checked_vertices, r.ok() ? "" : r.summary()}; }
 
-// The complex moved by s, as sorted vertex positions and sorted cells, each cell its sorted
-// outward loops rotated to start at their smallest point (reversed when s is a reflection,
-// so that equal forms mean equal oriented complexes up to one global reversal).
-using Loop = std::vector<LatticePoint>;
-using OrientedForm = std::pair<std::vector<LatticePoint>, std::vector<std::vector<Loop>>>;
+using detail::OrientedForm;
 
-OrientedForm oriented_form(const CellComplex& k, const CubeSymmetry& s) {
-    OrientedForm form;
-    for (const LatticePoint& p : k.positions()) form.first.push_back(s.apply(p));
-    std::sort(form.first.begin(), form.first.end());
-    const bool reverse = !s.is_rotation();
-    for (std::size_t c = 0; c < k.n_cells(); ++c) {
-        std::vector<Loop> cell;
-        for (HalfFaceHandle h : k.cell_halffaces(CellHandle(c))) {
-            Loop loop;
-            for (VertexHandle v : k.halfface_vertices(h)) loop.push_back(s.apply(k.position(v)));
-            if (reverse) std::reverse(loop.begin(), loop.end());
-            std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
-            cell.push_back(std::move(loop));
-        }
-        std::sort(cell.begin(), cell.end());
-        form.second.push_back(std::move(cell));
-    }
-    std::sort(form.second.begin(), form.second.end());
-    return form;
+OrientedForm window_form(const CellComplex& k, const CubeSymmetry& s) {
+    return detail::oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
 }
 
 struct Window {
@@ -108,7 +88,7 @@ std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const Tr
         detail::TemplateCache& cache = caches.local();
         ConfigurationComplex built;
         out[i] = outcome_of(detail::check_window(0, cache.unit(), [&] { return built = build_window(*windows[i].type, windows[i].pattern, rule, cache); }));
-        if (out[i].ok) forms[c] = oriented_form(built.complex, keys[i].s);
+        if (out[i].ok) forms[c] = window_form(built.complex, keys[i].s);  // empty: members get full checks
     });
     tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t i) {
         detail::TemplateCache& cache = caches.local();
@@ -122,7 +102,7 @@ std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const Tr
         } catch (const std::exception&) {
             return void(out[i] = full_check(windows[i], rule, cache));
         }
-        if (oriented_form(built.complex, keys[i].s) == forms[class_index[i]])
+        if (!forms[class_index[i]].empty() && window_form(built.complex, keys[i].s) == forms[class_index[i]])
             out[i] = out[rep];
         else
             out[i] = outcome_of(detail::check_window(0, cache.unit(), [&] { return std::move(built); }));
@@ -167,17 +147,17 @@ CompositionalResult run_compositional(const TransitionRule& rule, const ElementL
     result.rule = rule.name();
     result.reach_octants = static_cast<int>(reach_bits(rule).size());
     check_lemma(rule, result);
-    std::vector<WindowType> types;
-    std::vector<WindowTypeResult> type_results;
-    std::vector<std::vector<std::uint64_t>> patterns;
-    for (int p = 0; p < 8; ++p) {
-        types.push_back(window_type({p & 1, (p >> 1) & 1, (p >> 2) & 1}, rule));
-        WindowTypeResult tr;
-        tr.parity = types.back().parity;
-        tr.read_octants = static_cast<int>(types.back().reads.size());
-        patterns.push_back(distinct_windows(types.back(), rule, tr.shared_octants));
-        type_results.push_back(tr);
-    }
+    // The 8 types' enumerations are independent: in parallel, each into its own slot.
+    std::vector<WindowType> types(8);
+    std::vector<WindowTypeResult> type_results(8);
+    std::vector<std::vector<std::uint64_t>> patterns(8);
+    tbb::parallel_for(0, 8, [&](int p) {
+        const auto i = static_cast<std::size_t>(p);
+        types[i] = window_type({p & 1, (p >> 1) & 1, (p >> 2) & 1}, rule);
+        type_results[i].parity = types[i].parity;
+        type_results[i].read_octants = static_cast<int>(types[i].reads.size());
+        patterns[i] = distinct_windows(types[i], rule, type_results[i].shared_octants);
+    });
     std::vector<Window> windows;
     for (std::size_t p = 0; p < types.size(); ++p)
         for (std::size_t w = 0; w < patterns[p].size(); ++w) windows.push_back({&types[p], w, patterns[p][w]});

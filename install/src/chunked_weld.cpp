@@ -19,10 +19,14 @@ struct Chunk {
     std::vector<std::uint32_t> vertex_id, face_id;
     std::vector<std::uint64_t> vertex_owner, face_owner;  // owner refs (OwnerTable)
     std::vector<std::uint8_t> face_flip;  // foreign face met in the direction opposite to its owner's
+    // Vertices some other chunk holds too; only a face all of whose vertices are shared can
+    // be (its chunk alone owns the others: no table lookup).
+    std::vector<std::uint8_t> vertex_shared;
     // The local faces' loops over global vertex ids, rotated to their smallest id (offsets:
     // the builder's face_offsets), and their hashes (invariant under rotation and reversal).
     std::vector<VertexHandle> loops;
     std::vector<std::uint64_t> face_hash;
+    std::vector<std::uint8_t> face_shared;  // all its vertices shared: it may be in another chunk
     std::size_t owned_vertices = 0, owned_faces = 0, owned_loop_length = 0;
     std::size_t vertex_base = 0, face_base = 0, loop_base = 0, cell_base = 0, halfface_base = 0;
 
@@ -78,9 +82,12 @@ void number_vertices(Chunks& chunks) {
     for_each_chunk(chunks, [&](Chunk& chunk, std::size_t c) {
         const auto& ps = chunk.builder.positions();
         chunk.vertex_owner.resize(ps.size());
+        chunk.vertex_shared.resize(ps.size());
         for (std::size_t i = 0; i < ps.size(); ++i) {
-            chunk.vertex_owner[i] = table.owner(LatticePointHash{}(ps[i]), OwnerTable::ref(c, i), same);
-            chunk.owned_vertices += OwnerTable::chunk_of(chunk.vertex_owner[i]) == c ? 1 : 0;
+            const OwnerTable::Owner o = table.owner(LatticePointHash{}(ps[i]), OwnerTable::ref(c, i), same);
+            chunk.vertex_owner[i] = o.ref;
+            chunk.vertex_shared[i] = o.shared ? 1 : 0;
+            chunk.owned_vertices += OwnerTable::chunk_of(o.ref) == c ? 1 : 0;
         }
     });
     for (std::size_t c = 0, base = 0; c < chunks.size(); base += chunks[c++].owned_vertices) chunks[c].vertex_base = base;
@@ -106,11 +113,17 @@ void global_loops(Chunk& chunk) {
     chunk.loops.resize(local.size());
     const std::size_t nf = chunk.builder.n_faces();
     chunk.face_hash.resize(nf);
+    chunk.face_shared.assign(nf, 1);
     for (std::size_t f = 0; f < nf; ++f) {
         VertexHandle* loop = chunk.loops.data() + offsets[f];
         const std::size_t n = offsets[f + 1] - offsets[f];
-        for (std::size_t k = 0; k < n; ++k) loop[k] = VertexHandle(static_cast<std::int32_t>(chunk.vertex_id[local[offsets[f] + k].index()]));
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t v = local[offsets[f] + k].index();
+            loop[k] = VertexHandle(static_cast<std::int32_t>(chunk.vertex_id[v]));
+            chunk.face_shared[f] &= chunk.vertex_shared[v];
+        }
         std::rotate(loop, std::min_element(loop, loop + n), loop + n);
+        if (!chunk.face_shared[f]) continue;
         const bool forward = n < 3 || loop[1] <= loop[n - 1];
         std::uint64_t hash = mix64(n);
         for (std::size_t k = 0; k < n; ++k) {
@@ -125,19 +138,21 @@ void global_loops(Chunk& chunk) {
 void number_faces(Chunks& chunks) {
     for_each_chunk(chunks, [&](Chunk& chunk, std::size_t) { global_loops(chunk); });
     std::size_t total = 0;
-    for (const Chunk& c : chunks) total += c.builder.n_faces();
+    for (const Chunk& c : chunks) total += static_cast<std::size_t>(std::count(c.face_shared.begin(), c.face_shared.end(), 1));
     OwnerTable table(total);
     const auto loop = [&](std::uint64_t r) { return chunks[OwnerTable::chunk_of(r)].loop(OwnerTable::local_of(r)); };
     const auto same = [&](std::uint64_t a, std::uint64_t b) { return same_cycle(loop(a), loop(b)); };
     for_each_chunk(chunks, [&](Chunk& chunk, std::size_t c) {
-        for (std::size_t f = 0; f < chunk.face_hash.size(); ++f) table.insert(chunk.face_hash[f], OwnerTable::ref(c, f), same);
+        for (std::size_t f = 0; f < chunk.face_hash.size(); ++f)
+            if (chunk.face_shared[f]) table.insert(chunk.face_hash[f], OwnerTable::ref(c, f), same);
     });
     for_each_chunk(chunks, [&](Chunk& chunk, std::size_t c) {
         const std::size_t nf = chunk.face_hash.size();
         chunk.face_owner.resize(nf);
         chunk.face_flip.assign(nf, 0);
         for (std::size_t f = 0; f < nf; ++f) {
-            const std::uint64_t r = table.owner(chunk.face_hash[f], OwnerTable::ref(c, f), same);
+            const std::uint64_t r = chunk.face_shared[f] ? table.owner(chunk.face_hash[f], OwnerTable::ref(c, f), same).ref
+                                                         : OwnerTable::ref(c, f);
             chunk.face_owner[f] = r;
             if (OwnerTable::chunk_of(r) == c) {
                 ++chunk.owned_faces;

@@ -4,7 +4,9 @@
 // slot holds a reference ref + 1 (0 = empty), ref = chunk << 32 | local index; the keys live
 // in the chunks' own (immutable) arrays, so `same(a, b)` compares the keys of two refs.
 // Among equal keys a slot keeps the smallest ref (compare-and-swap minimum), so the owner
-// does not depend on which thread inserted first.
+// does not depend on which thread inserted first; and it marks a key inserted more than
+// once as shared (occurring in several chunks; each chunk inserts a key at most once).
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -34,24 +36,30 @@ public:
             std::uint64_t cur = slots_[i].load(std::memory_order_acquire);
             while (cur == 0)
                 if (slots_[i].compare_exchange_weak(cur, r + 1, std::memory_order_acq_rel)) return;
-            if (!same(cur - 1, r)) continue;
-            while (r + 1 < cur && !slots_[i].compare_exchange_weak(cur, r + 1, std::memory_order_acq_rel)) {
+            if (!same((cur & ~kShared) - 1, r)) continue;
+            for (;;) {
+                const std::uint64_t desired = std::min(cur & ~kShared, r + 1) | kShared;
+                if (desired == cur || slots_[i].compare_exchange_weak(cur, desired, std::memory_order_acq_rel)) return;
             }
-            return;
         }
     }
 
-    /// The owner (smallest ref) of r's key; every insert must have finished.
+    struct Owner {
+        std::uint64_t ref = 0;  ///< the smallest ref of the key
+        bool shared = false;    ///< inserted by more than one chunk
+    };
+    /// The owner of r's key; every insert must have finished.
     template <class Same>
-    [[nodiscard]] std::uint64_t owner(std::uint64_t hash, std::uint64_t r, Same&& same) const {
+    [[nodiscard]] Owner owner(std::uint64_t hash, std::uint64_t r, Same&& same) const {
         for (std::size_t i = mix64(hash) & mask_;; i = (i + 1) & mask_) {
             const std::uint64_t cur = slots_[i].load(std::memory_order_relaxed);
-            if (cur == 0) return r;  // unreachable after insert(r)
-            if (same(cur - 1, r)) return cur - 1;
+            if (cur == 0) return {r, false};  // unreachable after insert(r)
+            if (same((cur & ~kShared) - 1, r)) return {(cur & ~kShared) - 1, (cur & kShared) != 0};
         }
     }
 
 private:
+    static constexpr std::uint64_t kShared = std::uint64_t{1} << 63;
     std::unique_ptr<std::atomic<std::uint64_t>[]> slots_;
     std::size_t mask_ = 0;
 };
