@@ -11,7 +11,7 @@
 #include "dualhex/checkers/torus_classes.hpp"
 #include "dualhex/grid/configurations.hpp"
 #include "dualhex/install/element_templates.hpp"
-#include "oriented_form.hpp"
+#include "congruence_check.hpp"
 #include "window_check.hpp"
 
 namespace dualhex {
@@ -57,34 +57,8 @@ LevelAssignment canonical(const LevelAssignment& levels) {
 
 namespace {
 
-// The class path of run_weak_exhaustive: each torus (window) class's representative gets
-// the full check; every other member is built and proved to be the exact image of its
-// representative's complex under a motion of the torus (a symmetry about the application
-// point), oriented_form.hpp; the check is invariant under those motions, so the member's
-// outcome is its representative's. What depends on the placements themselves (elements
-// used) is read from the member's own build. A member that is not such an image, or whose
-// representative fails, is checked itself: the coverage is that of checking every one.
-
-// What the tally needs of one check.
-struct Outcome {
-    bool ok = false;
-    std::string summary;
-    std::map<std::string, std::size_t> elements;
-    int max_valence = 0;
-};
-
-Outcome outcome_of(const ConfigurationReport& r) {
-    return {r.ok(), r.summary(), r.elements, r.dual_edge_valences.empty() ? 0 : r.dual_edge_valences.rbegin()->first};
-}
-
-std::map<std::string, std::size_t> elements_of(const ConfigurationComplex& built) {
-    std::map<std::string, std::size_t> out;
-    for (const PlacedLeaf& leaf : built.coarse_leaves) ++out[leaf.placement ? leaf.placement->element : "hex"];
-    if (built.fine_hexes) out["fine"] = built.fine_hexes;
-    return out;
-}
-
-// The assignment moved by a window symmetry (octant b is on the + side of axis a iff bit a).
+// The assignment moved by a window symmetry (octant b is on the + side of axis a iff bit a)
+// or by a torus motion (congruence_check.hpp checks the configurations class by class).
 LevelAssignment moved_by(const LevelAssignment& lv, const CubeSymmetry& s) {
     LevelAssignment out{};
     for (int b = 0; b < 8; ++b) {
@@ -96,65 +70,6 @@ LevelAssignment moved_by(const LevelAssignment& lv, const CubeSymmetry& s) {
 LevelAssignment moved_by(const LevelAssignment& lv, const TorusMotion& m) {
     LevelAssignment out{};
     for (int b = 0; b < 8; ++b) out[static_cast<std::size_t>(m.apply_octant(b))] = lv[static_cast<std::size_t>(b)];
-    return out;
-}
-
-// Per configuration: its class's representative (the first of its orbit) and a motion
-// taking the representative's assignment to it.
-template <class Motion>
-struct Congruence {
-    std::vector<std::size_t> representative;
-    std::vector<Motion> motion;
-};
-
-template <class Motion>
-Congruence<Motion> congruence(const std::vector<LevelAssignment>& all, const std::vector<Motion>& motions) {
-    Congruence<Motion> out;
-    std::map<LevelAssignment, std::size_t> first;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        LevelAssignment key = all[i];
-        for (const Motion& m : motions) key = std::min(key, moved_by(all[i], m));
-        const std::size_t rep = first.emplace(key, i).first->second;
-        out.representative.push_back(rep);
-        out.motion.push_back(*std::find_if(motions.begin(), motions.end(), [&](const Motion& m) { return moved_by(all[rep], m) == all[i]; }));
-    }
-    return out;
-}
-
-TorusMotion inverse_of(const TorusMotion& m) { return m.inverse(); }
-CubeSymmetry inverse_of(const CubeSymmetry& s) { return s.inverse(); }
-
-// Every configuration's outcome in one domain: `check(i, built)` checks configuration i
-// (keeping its complex in `built`), `build(i)` only builds it, `form(complex, motion)` is the
-// moved oriented form. A member is moved back onto its representative and compared.
-template <class Motion, class Check, class Build, class Form>
-std::vector<Outcome> by_class(const Congruence<Motion>& classes, Check&& check, Build&& build, Form&& form) {
-    const std::size_t n = classes.representative.size();
-    std::vector<Outcome> out(n);
-    std::vector<detail::OrientedForm> forms(n);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        if (classes.representative[i] != i) return;
-        ConfigurationComplex built;
-        out[i] = outcome_of(check(i, built));
-        if (out[i].ok) forms[i] = form(built.complex, Motion{});
-    });
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        const std::size_t rep = classes.representative[i];
-        if (rep == i) return;
-        if (out[rep].ok && !forms[rep].empty()) {
-            try {
-                const ConfigurationComplex built = build(i);
-                if (form(built.complex, inverse_of(classes.motion[i])) == forms[rep]) {
-                    out[i] = out[rep];
-                    out[i].elements = elements_of(built);
-                    return;
-                }
-            } catch (const std::exception&) {  // the full check below reports it
-            }
-        }
-        ConfigurationComplex built;
-        out[i] = outcome_of(check(i, built));
-    });
     return out;
 }
 
@@ -171,28 +86,23 @@ WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const Eleme
     };
     const std::int64_t octant = 4 * detail::common_unit(library);
     // Tori: classes under the 384 motions of the torus; windows: under the 48 symmetries.
-    const std::vector<Outcome> tori = by_class(
-        congruence(configurations, torus_motions()),
+    const auto moved = [](const LevelAssignment& lv, const auto& m) { return moved_by(lv, m); };
+    const std::vector<ConfigurationReport> tori = detail::check_by_congruence(
+        detail::congruence(configurations, torus_motions(), moved),
         [&](std::size_t i, ConfigurationComplex& built) {
             return detail::check(0, [&] { return built = build_periodic_levels(torus_levels(configurations[i]), 2, rule, library); },
                                  [](const LatticePoint&) { return true; },
                                  [](const CellComplex&, std::span<const VertexHandle>) { return false; });
         },
         [&](std::size_t i) { return build_periodic_levels(torus_levels(configurations[i]), 2, rule, library); },
-        [&](const CellComplex& k, const TorusMotion& m) {
-            return detail::oriented_form(k, [&](const LatticePoint& p) { return m.apply(p, octant); }, m.symmetry.determinant() < 0);
-        });
-    std::vector<CubeSymmetry> symmetries;
-    for (int i = 0; i < CubeSymmetry::kOrder; ++i) symmetries.push_back(CubeSymmetry::from_index(i));
-    const std::vector<Outcome> windows = by_class(
-        congruence(configurations, symmetries),
+        [&](const CellComplex& k, const TorusMotion& m) { return detail::torus_form(k, m, octant); });
+    const std::vector<ConfigurationReport> windows = detail::check_by_congruence(
+        detail::congruence(configurations, detail::all_symmetries(), moved),
         [&](std::size_t i, ConfigurationComplex& built) {
             return detail::check_window(0, octant, [&] { return built = build_window_levels(as_levels(configurations[i]), rule, library); });
         },
         [&](std::size_t i) { return build_window_levels(as_levels(configurations[i]), rule, library); },
-        [&](const CellComplex& k, const CubeSymmetry& s) {
-            return detail::oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
-        });
+        detail::symmetric_form);
 
     std::set<LevelAssignment> classes, three;
     for (std::size_t n = 0; n < configurations.size(); ++n) {
@@ -201,16 +111,17 @@ WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const Eleme
         const LevelAssignment key = canonical(lv);
         classes.insert(key);
         if (*std::max_element(lv.begin(), lv.end()) == 2) three.insert(key);
-        const Outcome& report = tori[n];
-        const Outcome& window = windows[n];
-        r.periodic_passed += report.ok;
-        r.window_passed += window.ok;
-        if (report.ok && window.ok)
+        const ConfigurationReport& report = tori[n];
+        const ConfigurationReport& window = windows[n];
+        r.periodic_passed += report.ok();
+        r.window_passed += window.ok();
+        if (report.ok() && window.ok())
             ++r.passed;
         else
-            r.failures.push_back((report.ok ? "window " + window.summary : "torus " + report.summary));
+            r.failures.push_back((report.ok() ? "window " + window.summary() : "torus " + report.summary()));
         for (const auto& [name, count] : report.elements) r.elements[name] += count;
-        r.max_dual_edge_valence = std::max(r.max_dual_edge_valence, report.max_valence);
+        if (!report.dual_edge_valences.empty())
+            r.max_dual_edge_valence = std::max(r.max_dual_edge_valence, report.dual_edge_valences.rbegin()->first);
     }
     r.classes = static_cast<int>(classes.size());
     r.three_level_classes = static_cast<int>(three.size());

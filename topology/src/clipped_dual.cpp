@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <bit>
 #include <limits>
-#include <unordered_map>
 
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
@@ -48,8 +47,7 @@ struct Tables {
     std::vector<std::uint32_t> face_dual, edge_dual, vertex_dual;
 };
 
-// Sum and number of the distinct vertices of cell c (its dual vertex's centroid).
-RationalPoint cell_centroid(const CellComplex& k, CellHandle c, std::vector<VertexHandle>& scratch) {
+RationalPoint huge_cell_centroid(const CellComplex& k, CellHandle c, std::vector<VertexHandle>& scratch) {
     scratch.clear();
     for (HalfFaceHandle h : k.cell_halffaces(c))
         for (VertexHandle v : k.face_vertices(h.face())) scratch.push_back(v);
@@ -63,8 +61,24 @@ RationalPoint cell_centroid(const CellComplex& k, CellHandle c, std::vector<Vert
     return r;
 }
 
-// Ranges of this many vertices (cells, faces) per parallel task: the split does not change
-// any result (every entity's output has its own slot), only how the work is shared.
+// Sum and number of the distinct vertices of cell c (its dual vertex's centroid), deduplicated
+// in a small array (a cell has few; a sorted copy only for huge cells).
+RationalPoint cell_centroid(const CellComplex& k, CellHandle c, std::vector<VertexHandle>& scratch) {
+    std::array<VertexHandle, 48> seen;
+    std::size_t n = 0;
+    RationalPoint r{{0, 0, 0}, 0};
+    for (HalfFaceHandle h : k.cell_halffaces(c))
+        for (VertexHandle v : k.face_vertices(h.face())) {
+            if (std::find(seen.begin(), seen.begin() + static_cast<std::ptrdiff_t>(n), v) != seen.begin() + static_cast<std::ptrdiff_t>(n)) continue;
+            if (n == seen.size()) return huge_cell_centroid(k, c, scratch);
+            seen[n++] = v;
+            r.sum = r.sum + k.position(v);
+            ++r.denominator;
+        }
+    return r;
+}
+
+// Vertices (cells) per parallel task: any split gives the same result (each has its own slot).
 constexpr std::size_t kGrain = 2048;
 
 class Builder {
