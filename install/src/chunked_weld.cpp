@@ -231,6 +231,7 @@ CellComplex weld_chunks(std::size_t n_leaves, std::size_t chunk_leaves, const Em
         }
         for (std::size_t j = 0; j < chunk.leaf_cells.size(); ++j)
             leaf_cells[chunk.begin + j + 1] = static_cast<std::uint32_t>(chunk.cell_base + chunk.leaf_cells[j]);
+        chunk = Chunk();  // copied out, and no other chunk reads it any more: free it now (peak memory)
     });
     Chunks().swap(chunks);  // free the chunks' parts before the complex derives its edges
     return CellComplex(std::move(positions), std::move(face_offsets), std::move(face_loops), std::move(cell_offsets),
