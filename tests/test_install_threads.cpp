@@ -33,6 +33,14 @@
 namespace dualhex {
 namespace {
 
+// Under AddressSanitizer (about 10x slower) the grids are smaller: d5 only, random depth 3.
+constexpr bool kSanitized =
+#if defined(__SANITIZE_ADDRESS__)
+    true;
+#else
+    false;
+#endif
+
 const ElementLibrary& library() {
     static const std::shared_ptr<const ElementLibrary> lib = load_default_element_library();
     return *lib;
@@ -127,6 +135,7 @@ const std::filesystem::path kGrids = std::filesystem::path(DUALHEX_SHARED_DATA) 
 
 TEST(InstallThreads, SharedStrongGridsAreBitIdentical) {
     for (const char* name : {"sphere_strong_d5", "sphere_strong_d6"}) {
+        if (kSanitized && std::string(name) == "sphere_strong_d6") continue;
         SCOPED_TRACE(name);
         expect_same_for_all_threads(read_leaf_file(kGrids / (std::string(name) + ".leaves")), StrongRule(), {});
     }
@@ -159,13 +168,13 @@ TEST(InstallThreads, FirstFailingLeafIsTheSerialOne) {
 }
 
 RC_GTEST_PROP(InstallThreads, RandomGridsAreBitIdentical, ()) {
-    const LeafGrid grid = pair(*testing::gen_octree(4), Balance::Strong);
+    const LeafGrid grid = pair(*testing::gen_octree(kSanitized ? 3 : 4), Balance::Strong);
     const Run serial = run(grid, StrongRule(), {}, 1, false);
     for (int threads : {2, 3, 4}) RC_ASSERT(difference(serial, run(grid, StrongRule(), {}, threads, false)) == "");
 }
 
 RC_GTEST_PROP(InstallThreads, GridChecksAgreeWithSerial, ()) {
-    const LeafGrid grid = *testing::gen_octree(4);
+    const LeafGrid grid = *testing::gen_octree(kSanitized ? 3 : 4);
     GridCheck serial[3], parallel[3];
     const auto checks = [&](GridCheck* out) {
         out[0] = is_paired(grid);
