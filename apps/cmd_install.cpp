@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "histogram_format.hpp"
+#include "threads_option.hpp"
 
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/install.hpp"
@@ -29,6 +30,7 @@ namespace {
 struct InstallOptionsCli {
     std::string input, prefix, outside = "coarse", balance = "weak", certify;
     bool json = false, force = false;
+    int threads = 0;  // 0: every core
 };
 
 using Clock = std::chrono::steady_clock;
@@ -47,6 +49,7 @@ std::size_t non_hex_cells(const CellComplex& k) {
 }
 
 void run_install(const InstallOptionsCli& opt) {
+    const ThreadLimit limit(opt.threads);
     const std::string poly_path = opt.prefix + ".poly.vtk", hex_path = opt.prefix + ".hex.vtk";
     check_output(poly_path, opt.force);  // before any work
     check_output(hex_path, opt.force);
@@ -174,6 +177,7 @@ void register_install(CLI::App& app) {
         ->check(CLI::IsMember({"weak", "strong"}));
     sub->add_option("-o,--output", opt->prefix, "Output prefix: writes PREFIX.poly.vtk and PREFIX.hex.vtk")->required();
     sub->add_flag("--force", opt->force, "Overwrite the output files if they exist");
+    add_threads_option(*sub, opt->threads);
     sub->add_option("--certify", opt->certify,
                     "Also write a certificate of the installed complex to FILE (check it with "
                     "dualhex-proof-checker --file FILE)");

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/schemes/element_library.hpp"
+#include "threads_option.hpp"
 #include "verify_checks.hpp"
 
 namespace dualhex::app {
@@ -18,6 +19,7 @@ struct VerifyOptions {
     bool json = false;
     bool list = false;
     bool force = false;
+    int threads = 0;  ///< 0: every core
     std::string certify;  ///< directory for certificates ("" = none)
     std::vector<std::string> only;
 };
@@ -34,6 +36,7 @@ bool selected(const std::string& name, const std::vector<std::string>& only) {
 }
 
 void run_verify(const VerifyOptions& opt) {
+    const ThreadLimit limit(opt.threads);
     const CheckRegistry registry = default_checks();
     const bool any = std::any_of(registry.checks().begin(), registry.checks().end(),
                                  [&](const Check& c) { return selected(c.name, opt.only); });
@@ -135,6 +138,7 @@ void register_verify(CLI::App& app) {
     sub->add_option("--certify", opt->certify,
                     "After a passing run, write certificates (as `dualhex certify`) into DIR, DIR/weak, DIR/variants");
     sub->add_flag("--force", opt->force, "With --certify: write into DIR even if it is not empty");
+    add_threads_option(*sub, opt->threads);
     sub->callback([opt] { run_verify(*opt); });
 }
 

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "dualhex/install.hpp"
+#include "flat_grid.hpp"
 #include "dualhex/install/library.hpp"
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
@@ -56,21 +57,7 @@ double peak_mb() {
     return static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 
-LeafGrid flat_grid(int base) {
-    std::vector<Leaf> leaves;
-    const std::int64_t n = std::int64_t{1} << base;
-    for (std::int64_t i = 0; i < n; ++i)
-        for (std::int64_t j = 0; j < n; ++j)
-            for (std::int64_t k = 0; k < n; ++k) {
-                const Leaf c{base, i, j, k};
-                if (2 * j < n) {
-                    for (const Leaf& ch : children(c)) leaves.push_back(ch);
-                } else {
-                    leaves.push_back(c);
-                }
-            }
-    return LeafGrid(std::move(leaves));
-}
+using bench::flat_grid;
 
 long minor_faults() {
     rusage u{};

@@ -11,3 +11,6 @@ add_dependencies(test_install_cli dualhex dualhex-proof-checker)
 
 # random grids through the whole pipeline (RapidCheck)
 dualhex_add_test(test_install_properties SOURCES test_install_properties.cpp DEPS dualhex::install)
+
+# bit-identical results for 1..4 threads (oneTBB task arenas): install, clipped dual, files
+dualhex_add_test(test_install_threads SOURCES test_install_threads.cpp DEPS dualhex::install dualhex::geometry)

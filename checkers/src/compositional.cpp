@@ -8,13 +8,11 @@
 #include <unordered_map>
 
 #include "dualhex/install/element_templates.hpp"
-#include "window_check.hpp"
+#include "compositional_windows.hpp"
 
 namespace dualhex {
-namespace {
+namespace compositional_detail {
 
-using detail::Index3;
-constexpr int kLeaves = 8;  // the 2x2x2 leaves of B(g)
 
 std::vector<int> reach_bits(const TransitionRule& rule) {
     std::vector<int> bits;
@@ -45,15 +43,6 @@ void check_lemma(const TransitionRule& rule, CompositionalResult& result) {
         }
     }
 }
-
-// One parity type: the 8 leaves of B(g), g = parity, and the octants they read.
-struct WindowType {
-    std::array<int, 3> parity{};
-    std::array<LatticePoint, kLeaves> leaves;  // min corners, coarse-leaf units
-    std::vector<Index3> reads;                 // R(t)
-    std::array<std::vector<int>, kLeaves> read_index;  // per leaf: indices into reads
-    std::array<int, kLeaves> own{};            // per leaf: its own octant's index
-};
 
 Index3 octant_of(const LatticePoint& leaf) {
     return {detail::floor_div(leaf.x, 2), detail::floor_div(leaf.y, 2), detail::floor_div(leaf.z, 2)};
@@ -197,7 +186,6 @@ std::vector<std::uint64_t> distinct_windows(const WindowType& t, const Transitio
     return witnesses;
 }
 
-// B(g) for one pattern, translated so that g is the origin: [-U, U]^3.
 ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
                                   detail::TemplateCache& cache) {
     const std::int64_t U = cache.unit();
@@ -227,6 +215,18 @@ ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, co
     return out;
 }
 
+std::vector<PlacedLeaf> coarse_placements(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule) {
+    const auto fine = [&](const Index3& o) { return fine_in(t, pattern, o); };
+    std::vector<PlacedLeaf> out;
+    for (const LatticePoint& leaf : t.leaves) {
+        if (fine(octant_of(leaf))) continue;
+        PlacedLeaf placed{leaf, detail::coarse_leaf_context(leaf, fine), std::nullopt};
+        placed.placement = rule.place(placed.context);
+        out.push_back(std::move(placed));
+    }
+    return out;
+}
+
 std::string describe(const std::array<int, 3>& parity, const std::vector<Index3>& reads, std::uint64_t pattern) {
     std::ostringstream os;
     os << "g=(" << parity[0] << ',' << parity[1] << ',' << parity[2] << ") fine octants {";
@@ -240,45 +240,9 @@ std::string describe(const std::array<int, 3>& parity, const std::vector<Index3>
     return os.str();
 }
 
-}  // namespace
+}  // namespace compositional_detail
 
-CompositionalResult run_compositional(const TransitionRule& rule, const ElementLibrary& library,
-                                      const CompositionalOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
-    CompositionalResult result;
-    result.rule = rule.name();
-    result.reach_octants = static_cast<int>(reach_bits(rule).size());
-    check_lemma(rule, result);
-    detail::TemplateCache cache(library);
-    const std::int64_t half = cache.unit();
-    for (int p = 0; p < 8; ++p) {
-        const WindowType t = window_type({p & 1, (p >> 1) & 1, (p >> 2) & 1}, rule);
-        WindowTypeResult tr;
-        tr.parity = t.parity;
-        tr.read_octants = static_cast<int>(t.reads.size());
-        const std::vector<std::uint64_t> patterns = distinct_windows(t, rule, tr.shared_octants);
-        const auto stop = [&] { return options.stop_after_failures && result.failed >= options.stop_after_failures; };
-        for (std::size_t w = 0; w < patterns.size() && !stop(); ++w) {
-            ConfigurationComplex built;
-            const ConfigurationReport report =
-                detail::check_window(0, half, [&] { return built = build_window(t, patterns[w], rule, cache); });
-            ++tr.windows;
-            tr.checked_vertices += report.checked_vertices;
-            if (report.ok()) {
-                ++tr.passed;
-            } else if (++result.failed <= 10) {
-                result.failures.push_back(describe(t.parity, t.reads, patterns[w]) + ": " + report.summary());
-            }
-            if (options.on_window) options.on_window({t.parity, w, t.reads, patterns[w], &built, &report});
-        }
-        result.windows += tr.windows;
-        result.passed += tr.passed;
-        result.checked_vertices += tr.checked_vertices;
-        result.types.push_back(tr);
-    }
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
-}
+using namespace compositional_detail;
 
 std::string describe_window(const CompositionalWindow& window) {
     return describe(window.parity, window.reads, window.pattern);

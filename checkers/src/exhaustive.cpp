@@ -6,6 +6,9 @@
 #include "dualhex/checkers/cube_window.hpp"
 #include "dualhex/checkers/periodic_configuration.hpp"
 #include "dualhex/grid/configurations.hpp"
+#include "dualhex/install/element_templates.hpp"
+#include "congruence_check.hpp"
+#include "window_check.hpp"
 
 namespace dualhex {
 
@@ -24,6 +27,23 @@ std::string failure_text(const ConfigurationReport& r, const char* where) {
     return s;
 }
 
+// A torus motion moves octant cube b to apply_octant(b), mask bits likewise; a symmetry
+// about the application point moves the window's octant b (on the + side of axis a iff
+// bit a) to the octant of its image.
+std::uint8_t torus_image(std::uint8_t mask, const TorusMotion& m) {
+    unsigned out = 0;
+    for (int b = 0; b < 8; ++b) out |= ((mask >> b) & 1U) << m.apply_octant(b);
+    return static_cast<std::uint8_t>(out);
+}
+std::uint8_t window_image(std::uint8_t mask, const CubeSymmetry& s) {
+    unsigned out = 0;
+    for (int b = 0; b < 8; ++b) {
+        const LatticePoint img = s.apply({b & 1 ? 1 : -1, b & 2 ? 1 : -1, b & 4 ? 1 : -1});
+        out |= ((mask >> b) & 1U) << ((img.x > 0) | (img.y > 0) << 1 | (img.z > 0) << 2);
+    }
+    return static_cast<std::uint8_t>(out);
+}
+
 }  // namespace
 
 ExhaustiveResult run_exhaustive(const TransitionRule& rule, const ElementLibrary& library) {
@@ -37,12 +57,31 @@ ExhaustiveResult run_exhaustive(const TransitionRule& rule, const ElementLibrary
         s.fine = c.fine;
         res.classes.push_back(s);
     }
+    // The 256 tori (classes under the torus's 384 motions) and cube windows (under the 48
+    // symmetries about the application point), class by class in parallel
+    // (congruence_check.hpp), tallied in mask order.
+    std::vector<std::uint8_t> masks(kConfigurationCount);
+    for (int m = 0; m < kConfigurationCount; ++m) masks[static_cast<std::size_t>(m)] = static_cast<std::uint8_t>(m);
+    const std::int64_t U = detail::common_unit(library);
+    res.periodic = detail::check_by_congruence(
+        detail::congruence(masks, torus_motions(), torus_image),
+        [&](std::size_t m, ConfigurationComplex& built) {
+            return detail::check(masks[m], [&] { return built = build_periodic_configuration(masks[m], rule, library); },
+                                 [](const LatticePoint&) { return true; },
+                                 [](const CellComplex&, std::span<const VertexHandle>) { return false; });
+        },
+        [&](std::size_t m) { return build_periodic_configuration(masks[m], rule, library); },
+        [&](const CellComplex& k, const TorusMotion& motion) { return detail::torus_form(k, motion, 2 * U); });
+    res.window = detail::check_by_congruence(
+        detail::congruence(masks, detail::all_symmetries(), window_image),
+        [&](std::size_t m, ConfigurationComplex& built) {
+            return detail::check_window(masks[m], 2 * U, [&] { return built = build_cube_window(masks[m], rule, library); });
+        },
+        [&](std::size_t m) { return build_cube_window(masks[m], rule, library); }, detail::symmetric_form);
     for (int m = 0; m < kConfigurationCount; ++m) {
         const auto mask = static_cast<std::uint8_t>(m);
-        res.periodic.push_back(check_periodic_configuration(mask, rule, library));
-        res.window.push_back(check_cube_window(mask, rule, library));
-        const ConfigurationReport& p = res.periodic.back();
-        const ConfigurationReport& w = res.window.back();
+        const ConfigurationReport& p = res.periodic[static_cast<std::size_t>(m)];
+        const ConfigurationReport& w = res.window[static_cast<std::size_t>(m)];
         ClassSummary& s = res.classes[static_cast<std::size_t>(space.class_of(mask))];
         ++s.configurations;
         if (p.ok()) ++s.periodic_passed, ++res.periodic_passed;

@@ -2,10 +2,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <set>
 
+#include <tbb/parallel_for.h>
+
 #include "dualhex/checkers/periodic_configuration.hpp"
+#include "dualhex/checkers/torus_classes.hpp"
 #include "dualhex/grid/configurations.hpp"
+#include "dualhex/install/element_templates.hpp"
+#include "congruence_check.hpp"
+#include "window_check.hpp"
 
 namespace dualhex {
 
@@ -48,26 +55,71 @@ LevelAssignment canonical(const LevelAssignment& levels) {
     return best;
 }
 
+namespace {
+
+// The assignment moved by a window symmetry (octant b is on the + side of axis a iff bit a)
+// or by a torus motion (congruence_check.hpp checks the configurations class by class).
+LevelAssignment moved_by(const LevelAssignment& lv, const CubeSymmetry& s) {
+    LevelAssignment out{};
+    for (int b = 0; b < 8; ++b) {
+        const LatticePoint img = s.apply({b & 1 ? 1 : -1, b & 2 ? 1 : -1, b & 4 ? 1 : -1});
+        out[static_cast<std::size_t>((img.x > 0) | (img.y > 0) << 1 | (img.z > 0) << 2)] = lv[static_cast<std::size_t>(b)];
+    }
+    return out;
+}
+LevelAssignment moved_by(const LevelAssignment& lv, const TorusMotion& m) {
+    LevelAssignment out{};
+    for (int b = 0; b < 8; ++b) out[static_cast<std::size_t>(m.apply_octant(b))] = lv[static_cast<std::size_t>(b)];
+    return out;
+}
+
+}  // namespace
+
 WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const ElementLibrary& library) {
     const auto t0 = std::chrono::steady_clock::now();
     WeakExhaustiveResult r;
+    const std::vector<LevelAssignment> configurations = weak_configurations();
+    const auto as_levels = [](const LevelAssignment& lv) {
+        std::array<int, 8> levels{};
+        for (int b = 0; b < 8; ++b) levels[static_cast<std::size_t>(b)] = lv[static_cast<std::size_t>(b)];
+        return levels;
+    };
+    const std::int64_t octant = 4 * detail::common_unit(library);
+    // Tori: classes under the 384 motions of the torus; windows: under the 48 symmetries.
+    const auto moved = [](const LevelAssignment& lv, const auto& m) { return moved_by(lv, m); };
+    const std::vector<ConfigurationReport> tori = detail::check_by_congruence(
+        detail::congruence(configurations, torus_motions(), moved),
+        [&](std::size_t i, ConfigurationComplex& built) {
+            return detail::check(0, [&] { return built = build_periodic_levels(torus_levels(configurations[i]), 2, rule, library); },
+                                 [](const LatticePoint&) { return true; },
+                                 [](const CellComplex&, std::span<const VertexHandle>) { return false; });
+        },
+        [&](std::size_t i) { return build_periodic_levels(torus_levels(configurations[i]), 2, rule, library); },
+        [&](const CellComplex& k, const TorusMotion& m) { return detail::torus_form(k, m, octant); });
+    const std::vector<ConfigurationReport> windows = detail::check_by_congruence(
+        detail::congruence(configurations, detail::all_symmetries(), moved),
+        [&](std::size_t i, ConfigurationComplex& built) {
+            return detail::check_window(0, octant, [&] { return built = build_window_levels(as_levels(configurations[i]), rule, library); });
+        },
+        [&](std::size_t i) { return build_window_levels(as_levels(configurations[i]), rule, library); },
+        detail::symmetric_form);
+
     std::set<LevelAssignment> classes, three;
-    for (const LevelAssignment& lv : weak_configurations()) {
+    for (std::size_t n = 0; n < configurations.size(); ++n) {
+        const LevelAssignment& lv = configurations[n];
         ++r.configurations;
         const LevelAssignment key = canonical(lv);
         classes.insert(key);
         if (*std::max_element(lv.begin(), lv.end()) == 2) three.insert(key);
-        const ConfigurationReport report = check_periodic_levels(torus_levels(lv), 2, rule, library);
-        std::array<int, 8> levels{};
-        for (int b = 0; b < 8; ++b) levels[static_cast<std::size_t>(b)] = lv[static_cast<std::size_t>(b)];
-        const ConfigurationReport window = check_window_levels(levels, rule, library);
+        const ConfigurationReport& report = tori[n];
+        const ConfigurationReport& window = windows[n];
         r.periodic_passed += report.ok();
         r.window_passed += window.ok();
         if (report.ok() && window.ok())
             ++r.passed;
         else
             r.failures.push_back((report.ok() ? "window " + window.summary() : "torus " + report.summary()));
-        for (const auto& [name, n] : report.elements) r.elements[name] += n;
+        for (const auto& [name, count] : report.elements) r.elements[name] += count;
         if (!report.dual_edge_valences.empty())
             r.max_dual_edge_valence = std::max(r.max_dual_edge_valence, report.dual_edge_valences.rbegin()->first);
     }

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace dualhex {
 
@@ -13,21 +17,31 @@ GridCheck failure(const LeafGrid& grid, std::size_t a, std::size_t b, std::strin
     return {false, a, b, std::move(message)};
 }
 
+// Does `holds(item)` hold for every item? Ranges of items are tested in parallel (read-only
+// lookups); a failure anywhere stops the others early. The answer is a plain yes or no, the
+// same for any number of threads (the serial full passes below name the failure).
+template <class Item, class Holds>
+bool all_hold(const std::vector<Item>& items, Holds&& holds) {
+    std::atomic<bool> failed{false};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t n = r.begin(); n != r.end() && !failed.load(std::memory_order_relaxed); ++n)
+            if (!holds(items[n])) failed.store(true, std::memory_order_relaxed);
+    });
+    return !failed.load();
+}
+
 // Paired, with about 2 lookups per leaf instead of 8: a leaf other than its parent's child 0
 // only needs child 0 to be a leaf, which in turn checks all its siblings. (Lookups are
 // cache misses on large grids; the full pass below runs only to report a failure.)
 bool quickly_paired(const LeafGrid& grid) {
-    for (const Leaf& leaf : grid.leaves()) {
-        if (leaf.level == 0) continue;
+    return all_hold(grid.leaves(), [&](const Leaf& leaf) {
+        if (leaf.level == 0) return true;
         const auto siblings = children(parent(leaf));
-        if (child_index(leaf) != 0) {
-            if (!grid.find(siblings[0])) return false;
-            continue;
-        }
+        if (child_index(leaf) != 0) return grid.find(siblings[0]).has_value();
         for (std::size_t c = 1; c < 8; ++c)
             if (!grid.find(siblings[c])) return false;
-    }
-    return true;
+        return true;
+    });
 }
 
 }  // namespace
@@ -64,11 +78,12 @@ std::size_t leaf_towards(const LeafGrid& grid, Leaf cell, const Offset& d) {
 // node), and the parents of a node's neighbours are its parent and at most 7 cells of the
 // 2x2x2 block around it. The full pass below runs only to report a failure.
 bool quickly_balanced(const LeafGrid& grid, Balance mode) {
-    for (const Leaf& node : grid.interior_nodes()) {
-        if (node.level == 0) continue;  // the root has no neighbour
+    const auto offsets = neighbour_offsets(mode);
+    return all_hold(grid.interior_nodes(), [&](const Leaf& node) {
+        if (node.level == 0) return true;  // the root has no neighbour
         std::array<Leaf, 8> checked{parent(node)};
         std::size_t n_checked = 1;
-        for (const Offset& d : neighbour_offsets(mode)) {
+        for (const Offset& d : offsets) {
             const Leaf cell = neighbour(node, d);
             if (!cell.valid()) continue;
             const Leaf up = parent(cell);
@@ -76,8 +91,8 @@ bool quickly_balanced(const LeafGrid& grid, Balance mode) {
             if (!grid.is_subdivided(up)) return false;
             checked[n_checked++] = up;
         }
-    }
-    return true;
+        return true;
+    });
 }
 
 }  // namespace

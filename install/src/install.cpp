@@ -1,11 +1,29 @@
 // install(): every leaf becomes the rule's placed element or a plain hex, welded by
 // exact lattice keys into one CellComplex (install.hpp).
+//
+// Three steps. (1) In parallel, each leaf's context and placement (a leaf's element depends
+// only on its context, so leaves are independent); the first failing leaf in leaf order is
+// the error, as in a serial run. (2) A serial pass numbers the elements in first-use order
+// and makes their templates. (3) The welding: with one thread one builder in leaf order;
+// with more, chunks of leaves welded in parallel and merged to the same numbering
+// (chunked_weld.hpp). Either way the complex does not depend on the number of threads.
 #include "dualhex/install/install.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <unordered_map>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "chunked_weld.hpp"
 #include "context_index.hpp"
 #include "corner_welder.hpp"
 #include "dualhex/grid/predicates.hpp"
 #include "dualhex/install/element_templates.hpp"
+#include "dualhex/schemes/element_library.hpp"
 #include "dualhex/topology/complex_builder.hpp"
 
 namespace dualhex {
@@ -26,67 +44,161 @@ InstallCheck check_installable(const LeafGrid& grid, Balance balance) {
     return {false, "cannot install: " + c.message, c.first, c.second};
 }
 
+namespace {
+
+// Leaves per welding chunk: a few chunks per thread, 64..8192 leaves (any size gives the
+// same complex; chunked_weld.hpp).
+std::size_t chunk_leaves(std::size_t n_leaves, int threads) {
+    return std::clamp<std::size_t>(n_leaves / (8 * static_cast<std::size_t>(threads)), 64, 8192);
+}
+
+// Step 1: per leaf, the library index of its element (-1: plain hex) and the world symmetry.
+struct LeafPlan {
+    std::int16_t element = -1;
+    std::int8_t world = 0;
+};
+
+std::vector<LeafPlan> plan_leaves(const LeafGrid& grid, const TransitionRule& rule, const ElementLibrary& library,
+                                  const ContextIndex& index) {
+    std::unordered_map<std::string, int> by_name;
+    for (std::size_t e = 0; e < library.elements().size(); ++e) by_name.emplace(library.elements()[e].name, static_cast<int>(e));
+    const std::size_t n_leaves = grid.size();
+    std::vector<LeafPlan> plans(n_leaves);
+    std::atomic<std::size_t> first_error{n_leaves};
+    std::mutex error_mutex;
+    std::string error;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_leaves, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t n = r.begin(); n != r.end() && n < first_error.load(std::memory_order_relaxed); ++n) {
+            try {
+                const LeafContext ctx = index.context(grid.leaf(n));
+                const std::optional<Placement> placement = rule.place(ctx);
+                if (!placement) continue;
+                detail::check_placement_symmetry(*placement);
+                const auto it = by_name.find(placement->element);
+                if (it == by_name.end()) (void)library.at(placement->element);  // throws, naming the known elements
+                plans[n] = {static_cast<std::int16_t>(it->second), static_cast<std::int8_t>(world_symmetry(ctx, *placement).index())};
+            } catch (const std::exception& e) {
+                const std::lock_guard lock(error_mutex);
+                if (n < first_error.load()) {
+                    first_error.store(n);
+                    error = e.what();
+                }
+            }
+        }
+    });
+    if (const std::size_t n = first_error.load(); n < n_leaves) throw InstallError("leaf " + grid.describe(n) + ": " + error, n);
+    return plans;
+}
+
+// Step 2 and the per-leaf emission of step 3.
+class LeafEmitter {
+public:
+    LeafEmitter(const LeafGrid& grid, const ElementLibrary& library, const std::vector<LeafPlan>& plans,
+                detail::TemplateCache& cache, InstallResult& out)
+        : grid_(&grid), unit_(cache.unit()), max_level_(grid.max_level()), hex_(&cache.hex(cache.unit())) {
+        std::vector<int> first_use(library.elements().size(), -1);
+        out.leaf_element.assign(plans.size(), -1);
+        out.leaf_symmetry.assign(plans.size(), 0);
+        for (std::size_t n = 0; n < plans.size(); ++n) {
+            const LeafPlan& p = plans[n];
+            if (p.element < 0) continue;
+            int& e = first_use[static_cast<std::size_t>(p.element)];
+            if (e < 0) {
+                e = cache.element_index(library.elements()[static_cast<std::size_t>(p.element)].name);
+                templates_.resize(static_cast<std::size_t>(e) + 1, {});
+            }
+            const ElementTemplate*& t = templates_[static_cast<std::size_t>(e)][static_cast<std::size_t>(p.world)];
+            if (!t) t = &cache.placed(e, CubeSymmetry::from_index(p.world));
+            out.leaf_element[n] = static_cast<std::int16_t>(e);
+            out.leaf_symmetry[n] = p.world;
+        }
+        out.element_names = cache.element_names();
+        elements_ = &out.leaf_element;
+        symmetries_ = &out.leaf_symmetry;
+    }
+
+    /// Leaf n's cells, each point welded by `weld(point)` (hex corners by `corner(x, y, z)`,
+    /// finest-level corner indices).
+    template <class Weld, class Corner>
+    void emit(ComplexBuilder& builder, std::size_t n, Weld&& weld, Corner&& corner) const {
+        thread_local std::vector<VertexHandle> vs, loop;
+        thread_local std::vector<HalfFaceHandle> hfs;
+        const Leaf& leaf = grid_->leaf(n);
+        const std::int64_t s = std::int64_t{1} << (max_level_ - leaf.level);
+        const std::int16_t e = (*elements_)[n];
+        if (e >= 0) {
+            LeafContext frame;
+            if (leaf.level > 0) detail::frame_of(leaf, frame);
+            const ElementTemplate& t = *templates_[static_cast<std::size_t>(e)][static_cast<std::size_t>((*symmetries_)[n])];
+            detail::emit_welded(builder, t, frame.application_point * (unit_ * s), s, weld, vs, loop, hfs);
+            return;
+        }
+        // The hex template's point c is the leaf corner (c & 1, c >> 1 & 1, c >> 2 & 1).
+        vs.resize(8);
+        for (std::int64_t c = 0; c < 8; ++c)
+            vs[static_cast<std::size_t>(c)] =
+                corner((leaf.i + (c & 1)) * s, (leaf.j + (c >> 1 & 1)) * s, (leaf.k + (c >> 2 & 1)) * s);
+        detail::emit_cells(builder, *hex_, vs, loop, hfs);
+    }
+
+    [[nodiscard]] std::int64_t unit() const { return unit_; }
+
+private:
+    using ElementTemplate = detail::ElementTemplate;
+    const LeafGrid* grid_;
+    std::int64_t unit_;
+    int max_level_;
+    const ElementTemplate* hex_;
+    std::vector<std::array<const ElementTemplate*, 48>> templates_;  // per first-use element, per world symmetry
+    const std::vector<std::int16_t>* elements_ = nullptr;
+    const std::vector<std::int8_t>* symmetries_ = nullptr;
+};
+
+// Step 3 with one thread: one builder, grid corners welded densely (corner_welder.hpp).
+CellComplex weld_serial(const LeafEmitter& emitter, std::size_t n_leaves, int max_level, std::vector<std::uint32_t>& leaf_cells) {
+    ComplexBuilder builder;
+    CornerWelder weld(builder, emitter.unit(), max_level, n_leaves);
+    // With the corners welded densely, only element points off the corners are hashed.
+    builder.reserve(n_leaves + n_leaves / 2, 4 * n_leaves, n_leaves + n_leaves / 2,
+                    weld.dense() ? n_leaves / 8 : n_leaves + n_leaves / 2);
+    leaf_cells.reserve(n_leaves + 1);
+    leaf_cells.push_back(0);
+    const auto corner = [&](std::int64_t x, std::int64_t y, std::int64_t z) { return weld.corner(x, y, z); };
+    for (std::size_t n = 0; n < n_leaves; ++n) {
+        emitter.emit(builder, n, weld, corner);
+        leaf_cells.push_back(static_cast<std::uint32_t>(builder.n_cells()));
+    }
+    return std::move(builder).build();
+}
+
+}  // namespace
+
 InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const ElementLibrary& library,
                       const InstallOptions& options) {
     if (const InstallCheck c = check_installable(grid, options.balance); !c.ok)
         throw InstallError(c.message, c.first, c.second);
     const ContextIndex index(grid, options.outside_root);
+    const std::vector<LeafPlan> plans = plan_leaves(grid, rule, library, index);
     detail::TemplateCache cache(library);
     InstallResult out;
     out.unit = cache.unit();
     out.max_level = grid.max_level();
-    const std::int64_t U = out.unit;
+    const LeafEmitter emitter(grid, library, plans, cache, out);
     const std::size_t n_leaves = grid.size();
-    out.leaf_cells.reserve(n_leaves + 1);
-    out.leaf_cells.push_back(0);
-    out.leaf_element.assign(n_leaves, -1);
-    out.leaf_symmetry.assign(n_leaves, 0);
-
-    ComplexBuilder builder;
-    CornerWelder weld(builder, U, out.max_level, n_leaves);
-    // With the corners welded densely, only element points off the corners are hashed.
-    builder.reserve(n_leaves + n_leaves / 2, 4 * n_leaves, n_leaves + n_leaves / 2,
-                    weld.dense() ? n_leaves / 8 : n_leaves + n_leaves / 2);
-    std::vector<VertexHandle> vs, loop;
-    std::vector<HalfFaceHandle> hfs;
-    const detail::ElementTemplate& hex = cache.hex(U);
-    std::string last_name;
-    int last_index = -1;
-    for (std::size_t n = 0; n < n_leaves; ++n) {
-        const Leaf& leaf = grid.leaf(n);
-        const std::int64_t s = std::int64_t{1} << (out.max_level - leaf.level);
-        const LeafContext ctx = index.context(leaf);
-        std::optional<Placement> placement;
-        try {
-            placement = rule.place(ctx);
-            if (placement) {
-                detail::check_placement_symmetry(*placement);
-                if (last_index < 0 || placement->element != last_name) {
-                    last_index = cache.element_index(placement->element);
-                    last_name = placement->element;
-                }
-            }
-        } catch (const std::exception& e) {
-            throw InstallError("leaf " + grid.describe(n) + ": " + e.what(), n);
-        }
-        if (placement) {
-            const CubeSymmetry world = world_symmetry(ctx, *placement);
-            out.leaf_element[n] = static_cast<std::int16_t>(last_index);
-            out.leaf_symmetry[n] = static_cast<std::int8_t>(world.index());
-            detail::emit_welded(builder, cache.placed(last_index, world), ctx.application_point * (U * s), s, weld, vs,
-                                loop, hfs);
-        } else {
-            // The hex template's point c is the leaf corner (c & 1, c >> 1 & 1, c >> 2 & 1).
-            vs.resize(8);
-            for (std::int64_t c = 0; c < 8; ++c)
-                vs[static_cast<std::size_t>(c)] =
-                    weld.corner((leaf.i + (c & 1)) * s, (leaf.j + (c >> 1 & 1)) * s, (leaf.k + (c >> 2 & 1)) * s);
-            detail::emit_cells(builder, hex, vs, loop, hfs);
-        }
-        out.leaf_cells.push_back(static_cast<std::uint32_t>(builder.n_cells()));
+    const int threads = tbb::this_task_arena::max_concurrency();
+    if (threads == 1) {
+        out.complex = weld_serial(emitter, n_leaves, out.max_level, out.leaf_cells);
+        return out;
     }
-    out.element_names = cache.element_names();
-    out.complex = std::move(builder).build();
+    const std::int64_t U = out.unit;
+    out.complex = detail::weld_chunks(
+        n_leaves, chunk_leaves(n_leaves, threads),
+        [&](ComplexBuilder& builder, std::size_t n) {
+            const auto weld = [&](const LatticePoint& p) { return builder.add_vertex(p); };
+            const auto corner = [&](std::int64_t x, std::int64_t y, std::int64_t z) { return builder.add_vertex({x * U, y * U, z * U}); };
+            emitter.emit(builder, n, weld, corner);
+        },
+        out.leaf_cells);
     return out;
 }
 

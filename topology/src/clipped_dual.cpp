@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <bit>
 #include <limits>
-#include <unordered_map>
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
 
 namespace dualhex {
 namespace {
@@ -37,16 +40,58 @@ VertexHandle before(const CellComplex& k, HalfFaceHandle h, VertexHandle v) {
     return {};
 }
 
+// The per-entity tables every dual cell reads: built once, then shared read-only by the
+// per-vertex workers (copies of Builder referring to them).
+struct Tables {
+    std::vector<std::uint8_t> vertex_planes, face_plane;
+    std::vector<std::uint32_t> face_dual, edge_dual, vertex_dual;
+};
+
+RationalPoint huge_cell_centroid(const CellComplex& k, CellHandle c, std::vector<VertexHandle>& scratch) {
+    scratch.clear();
+    for (HalfFaceHandle h : k.cell_halffaces(c))
+        for (VertexHandle v : k.face_vertices(h.face())) scratch.push_back(v);
+    std::sort(scratch.begin(), scratch.end());
+    RationalPoint r{{0, 0, 0}, 0};
+    for (std::size_t i = 0; i < scratch.size(); ++i)
+        if (i == 0 || scratch[i] != scratch[i - 1]) {
+            r.sum = r.sum + k.position(scratch[i]);
+            ++r.denominator;
+        }
+    return r;
+}
+
+// Sum and number of the distinct vertices of cell c (its dual vertex's centroid), deduplicated
+// in a small array (a cell has few; a sorted copy only for huge cells).
+RationalPoint cell_centroid(const CellComplex& k, CellHandle c, std::vector<VertexHandle>& scratch) {
+    std::array<VertexHandle, 48> seen;
+    std::size_t n = 0;
+    RationalPoint r{{0, 0, 0}, 0};
+    for (HalfFaceHandle h : k.cell_halffaces(c))
+        for (VertexHandle v : k.face_vertices(h.face())) {
+            if (std::find(seen.begin(), seen.begin() + static_cast<std::ptrdiff_t>(n), v) != seen.begin() + static_cast<std::ptrdiff_t>(n)) continue;
+            if (n == seen.size()) return huge_cell_centroid(k, c, scratch);
+            seen[n++] = v;
+            r.sum = r.sum + k.position(v);
+            ++r.denominator;
+        }
+    return r;
+}
+
+// Vertices (cells) per parallel task: any split gives the same result (each has its own slot).
+constexpr std::size_t kGrain = 2048;
+
 class Builder {
 public:
-    Builder(const CellComplex& k, const Incidence& inc, const LatticePoint& lo, const LatticePoint& hi)
-        : k_(k), inc_(inc), lo_(lo), hi_(hi) {}
+    Builder(const CellComplex& k, const Incidence& inc, const LatticePoint& lo, const LatticePoint& hi, Tables& t)
+        : k_(k), inc_(inc), lo_(lo), hi_(hi), vertex_planes_(t.vertex_planes), face_plane_(t.face_plane),
+          face_dual_(t.face_dual), edge_dual_(t.edge_dual), vertex_dual_(t.vertex_dual) {}
 
     ClippedDual run() {
         ClippedDual out;
         out.box_min = lo_;
         out.box_max = hi_;
-        const std::size_t nv = k_.n_vertices(), ne = k_.n_edges(), nf = k_.n_faces(), nc = k_.n_cells();
+        const std::size_t nv = k_.n_vertices(), nf = k_.n_faces(), nc = k_.n_cells();
 
         // Room for every dual vertex up front (no regrowth copies): cells, then boundary
         // faces, crease edges (at most the boundary edges) and corners.
@@ -57,24 +102,34 @@ public:
         out.kind.reserve(n_points);
         out.primal.reserve(n_points);
 
-        // Dual vertices of cells: centroid of the distinct vertices.
-        out.points.assign(nc, RationalPoint{{0, 0, 0}, 0});
-        for (std::size_t v = 0; v < nv; ++v) {
-            const LatticePoint& p = k_.position(VertexHandle(v));
-            for (CellHandle c : inc_.vertex_cells(VertexHandle(v))) {
-                RationalPoint& r = out.points[c.index()];
-                r.sum = r.sum + p;
-                ++r.denominator;
-            }
-        }
+        // Dual vertices of cells: centroid of the distinct vertices (exact sums: the same
+        // in any order).
+        out.points.resize(nc);
         out.kind.assign(nc, DualVertexKind::Cell);
         out.primal.resize(nc);
-        for (std::size_t c = 0; c < nc; ++c) out.primal[c] = static_cast<std::uint32_t>(c);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+            std::vector<VertexHandle> scratch;
+            for (std::size_t c = r.begin(); c != r.end(); ++c) {
+                out.points[c] = cell_centroid(k_, CellHandle(c), scratch);
+                out.primal[c] = static_cast<std::uint32_t>(c);
+            }
+        });
 
         // Vertex planes: bit 2a (lo side) / 2a+1 (hi side) of axis a.
-        vertex_planes_.assign(nv, 0);
-        for (std::size_t v = 0; v < nv; ++v) vertex_planes_[v] = planes_of(k_.position(VertexHandle(v)));
+        vertex_planes_.resize(nv);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t v = r.begin(); v != r.end(); ++v) vertex_planes_[v] = planes_of(k_.position(VertexHandle(v)));
+        });
+        add_boundary_points(out);
+        add_hexes(out);
+        return out;
+    }
 
+private:
+    // The dual vertices on the box surface, numbered in primal order after the cells:
+    // boundary faces, crease edges, corners (few: a serial pass over flags).
+    void add_boundary_points(ClippedDual& out) {
+        const std::size_t nv = k_.n_vertices(), ne = k_.n_edges(), nf = k_.n_faces();
         // Boundary faces: the plane they lie in (a single bit), or none (a hole).
         face_plane_.assign(nf, 0);
         face_dual_.assign(nf, kNone);
@@ -112,25 +167,42 @@ public:
         for (std::size_t v = 0; v < nv; ++v)
             if (axes_of(vertex_planes_[v]) == 3)
                 vertex_dual_[v] = add(out, {k_.position(VertexHandle(v)), 1}, DualVertexKind::Corner, v);
-
-        out.hexes.reserve(nv);
-        out.primal_vertex.reserve(nv);
-        for (std::size_t v = 0; v < nv; ++v) {
-            const VertexHandle vh(v);
-            faces_.clear();
-            collect(vh);
-            std::array<std::uint32_t, 8> hex{};
-            if (const char* defect = faces_.why ? faces_.why : oriented_cube(faces_, hex)) {
-                out.errors.push_back({vh, std::string("clipped dual cell of vertex ") + std::to_string(v) + ": " + defect});
-            } else {
-                out.hexes.push_back(hex);
-                out.primal_vertex.push_back(vh);
-            }
-        }
-        return out;
     }
 
-private:
+    // One hex per vertex, in vertex order; each range of vertices is built by its own copy
+    // of this builder (its own scratch, the shared tables), into the vertex's own slot.
+    void add_hexes(ClippedDual& out) const {
+        const std::size_t nv = k_.n_vertices();
+        out.hexes.resize(nv);
+        out.primal_vertex.resize(nv);
+        std::vector<std::uint8_t> failed(nv, 0);
+        tbb::combinable<std::vector<DualError>> errors;
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+            Builder worker(*this);
+            for (std::size_t v = r.begin(); v != r.end(); ++v) {
+                const VertexHandle vh(v);
+                out.primal_vertex[v] = vh;
+                worker.faces_.clear();
+                worker.collect(vh);
+                const char* defect = worker.faces_.why ? worker.faces_.why : oriented_cube(worker.faces_, out.hexes[v]);
+                if (!defect) continue;
+                failed[v] = 1;
+                errors.local().push_back({vh, std::string("clipped dual cell of vertex ") + std::to_string(v) + ": " + defect});
+            }
+        });
+        errors.combine_each([&](const std::vector<DualError>& e) { out.errors.insert(out.errors.end(), e.begin(), e.end()); });
+        if (out.errors.empty()) return;
+        std::sort(out.errors.begin(), out.errors.end(), [](const DualError& a, const DualError& b) { return a.vertex < b.vertex; });
+        std::size_t kept = 0;
+        for (std::size_t v = 0; v < nv; ++v)
+            if (!failed[v]) {
+                out.hexes[kept] = out.hexes[v];
+                out.primal_vertex[kept++] = out.primal_vertex[v];
+            }
+        out.hexes.resize(kept);
+        out.primal_vertex.resize(kept);
+    }
+
     static int axis_of(unsigned plane_bit) { return plane_bit & 0x3 ? 0 : plane_bit & 0xC ? 1 : 2; }
     static int axes_of(unsigned planes) {
         return ((planes & 0x3) != 0) + ((planes & 0xC) != 0) + ((planes & 0x30) != 0);
@@ -340,8 +412,8 @@ private:
     const CellComplex& k_;
     const Incidence& inc_;
     LatticePoint lo_, hi_;
-    std::vector<std::uint8_t> vertex_planes_, face_plane_;
-    std::vector<std::uint32_t> face_dual_, edge_dual_, vertex_dual_;
+    std::vector<std::uint8_t>&vertex_planes_, &face_plane_;
+    std::vector<std::uint32_t>&face_dual_, &edge_dual_, &vertex_dual_;
     DualCellFaces faces_;
     struct Around {
         VertexHandle prev, next;
@@ -357,7 +429,8 @@ private:
 }  // namespace
 
 ClippedDual clipped_dual(const CellComplex& k, const Incidence& inc, const LatticePoint& lo, const LatticePoint& hi) {
-    return Builder(k, inc, lo, hi).run();
+    Tables tables;
+    return Builder(k, inc, lo, hi, tables).run();
 }
 
 ClippedDual clipped_dual(const CellComplex& k, const Incidence& inc) {
@@ -372,29 +445,5 @@ ClippedDual clipped_dual(const CellComplex& k, const Incidence& inc) {
 }
 
 ClippedDual clipped_dual(const CellComplex& k) { return clipped_dual(k, Incidence(k)); }
-
-std::map<int, std::size_t> clipped_dual_edge_valences(const ClippedDual& d) {
-    // The 12 edges of a VTK hexahedron.
-    static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                                          {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-    std::vector<std::uint64_t> keys;
-    keys.reserve(12 * d.hexes.size());
-    for (const auto& h : d.hexes)
-        for (const auto& [i, j] : kEdges) {
-            std::uint32_t a = h[static_cast<std::size_t>(i)], b = h[static_cast<std::size_t>(j)];
-            if (d.kind[a] != DualVertexKind::Cell && d.kind[b] != DualVertexKind::Cell) continue;
-            if (a > b) std::swap(a, b);
-            keys.push_back(std::uint64_t{a} << 32 | b);
-        }
-    std::sort(keys.begin(), keys.end());
-    std::map<int, std::size_t> h;
-    for (std::size_t i = 0; i < keys.size();) {
-        std::size_t j = i;
-        while (j < keys.size() && keys[j] == keys[i]) ++j;
-        ++h[static_cast<int>(j - i)];
-        i = j;
-    }
-    return h;
-}
 
 }  // namespace dualhex

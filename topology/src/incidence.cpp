@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include <tbb/parallel_invoke.h>
+
 namespace dualhex {
 namespace {
 
@@ -53,86 +55,94 @@ Incidence::Incidence(const CellComplex& k) : complex_(&k) {
     const auto& cell_offsets = k.cell_offsets();
     const auto& halffaces = k.all_cell_halffaces();
 
-    {
-        Pairs<EdgeHandle> ve;
-        ve.reserve(2 * ne);
-        for (std::size_t e = 0; e < ne; ++e) {
-            const auto [a, b] = k.edge_vertices(EdgeHandle(e));
-            ve.emplace_back(a.idx, EdgeHandle(e));
-            if (b != a) ve.emplace_back(b.idx, EdgeHandle(e));
+    // Two independent groups of relations (each reusing its own pair buffer) are built
+    // concurrently; each relation is built exactly as alone, so the result does not depend
+    // on the threads.
+    const auto by_faces = [&] {
+        {
+            Pairs<EdgeHandle> ve;
+            ve.reserve(2 * ne);
+            for (std::size_t e = 0; e < ne; ++e) {
+                const auto [a, b] = k.edge_vertices(EdgeHandle(e));
+                ve.emplace_back(a.idx, EdgeHandle(e));
+                if (b != a) ve.emplace_back(b.idx, EdgeHandle(e));
+            }
+            vertex_edges_ = Csr<EdgeHandle>::from_pairs(nv, ve);
         }
-        vertex_edges_ = Csr<EdgeHandle>::from_pairs(nv, ve);
-    }
-    Pairs<FaceHandle> vf;  // then edge -> faces
-    vf.reserve(n_loop);
-    {
-        Stamper<VertexHandle> seen(0);
-        for (std::size_t f = 0; f < nf; ++f) {
-            const FaceHandle fh(f);
-            const auto loop = k.face_vertices(fh);
-            if (loop.size() > 16 && seen.stamp.empty()) seen = Stamper<VertexHandle>(nv);
-            distinct(loop, fh, f, seen, vf);
+        Pairs<FaceHandle> vf;  // then edge -> faces
+        vf.reserve(n_loop);
+        {
+            Stamper<VertexHandle> seen(0);
+            for (std::size_t f = 0; f < nf; ++f) {
+                const FaceHandle fh(f);
+                const auto loop = k.face_vertices(fh);
+                if (loop.size() > 16 && seen.stamp.empty()) seen = Stamper<VertexHandle>(nv);
+                distinct(loop, fh, f, seen, vf);
+            }
+            vertex_faces_ = Csr<FaceHandle>::from_pairs(nv, vf);
         }
-        vertex_faces_ = Csr<FaceHandle>::from_pairs(nv, vf);
-    }
-    {
-        Pairs<FaceHandle>& ef = vf;
-        ef.clear();
-        Stamper<EdgeHandle> seen(0);
-        for (std::size_t f = 0; f < nf; ++f) {
-            const FaceHandle fh(f);
-            const auto edges = k.face_edges(fh);
-            if (edges.size() > 16 && seen.stamp.empty()) seen = Stamper<EdgeHandle>(ne);
-            distinct(edges, fh, f, seen, ef);
+        {
+            Pairs<FaceHandle>& ef = vf;
+            ef.clear();
+            Stamper<EdgeHandle> seen(0);
+            for (std::size_t f = 0; f < nf; ++f) {
+                const FaceHandle fh(f);
+                const auto edges = k.face_edges(fh);
+                if (edges.size() > 16 && seen.stamp.empty()) seen = Stamper<EdgeHandle>(ne);
+                distinct(edges, fh, f, seen, ef);
+            }
+            edge_faces_ = Csr<FaceHandle>::from_pairs(ne, ef);
         }
-        edge_faces_ = Csr<FaceHandle>::from_pairs(ne, ef);
-    }
-    Pairs<FaceHandle>().swap(vf);
-    // Upper bound of the vertex (edge) references of all cells: the loop sizes of their faces.
-    std::size_t cell_refs = 0;
-    for (HalfFaceHandle h : halffaces) {
-        const auto& fo = k.face_offsets();
-        cell_refs += fo[h.face().index() + 1] - fo[h.face().index()];
-    }
-    Pairs<CellHandle> fc;  // then vertex -> cells, edge -> cells
-    fc.reserve(std::max(n_halffaces, cell_refs));
-    {
-        for (std::size_t c = 0; c < nc; ++c)
-            for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
-                fc.emplace_back(halffaces[i].face().idx, CellHandle(c));
-        face_cells_ = Csr<CellHandle>::from_pairs(nf, fc);
-    }
-    {
-        Pairs<HalfFaceHandle> fh_pairs;
-        fh_pairs.reserve(n_halffaces);
-        for (HalfFaceHandle h : halffaces) fh_pairs.emplace_back(h.face().idx, h);
-        face_halffaces_ = Csr<HalfFaceHandle>::from_pairs(nf, fh_pairs);
-    }
-    {
-        Pairs<CellHandle>& vc = fc;
-        vc.clear();
-        Stamper<VertexHandle> in_cell(nv);
-        for (std::size_t c = 0; c < nc; ++c) {
-            const CellHandle ch(c);
-            for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
-                for (VertexHandle v : k.face_vertices(halffaces[i].face()))
-                    if (in_cell.first(v, c)) vc.emplace_back(v.idx, ch);
+        Pairs<FaceHandle>().swap(vf);
+        {
+            Pairs<HalfFaceHandle> fh_pairs;
+            fh_pairs.reserve(n_halffaces);
+            for (HalfFaceHandle h : halffaces) fh_pairs.emplace_back(h.face().idx, h);
+            face_halffaces_ = Csr<HalfFaceHandle>::from_pairs(nf, fh_pairs);
         }
-        vertex_cells_ = Csr<CellHandle>::from_pairs(nv, vc);
-    }
-    {
-        Pairs<CellHandle>& ec = fc;
-        ec.clear();
-        Stamper<EdgeHandle> in_cell(ne);
-        for (std::size_t c = 0; c < nc; ++c) {
-            const CellHandle ch(c);
-            for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
-                for (EdgeHandle e : k.face_edges(halffaces[i].face()))
-                    if (in_cell.first(e, c)) ec.emplace_back(e.idx, ch);
+    };
+    const auto by_cells = [&] {
+        // Upper bound of the vertex (edge) references of all cells: the loop sizes of their faces.
+        std::size_t cell_refs = 0;
+        for (HalfFaceHandle h : halffaces) {
+            const auto& fo = k.face_offsets();
+            cell_refs += fo[h.face().index() + 1] - fo[h.face().index()];
         }
-        edge_cells_ = Csr<CellHandle>::from_pairs(ne, ec);
-    }
-    Pairs<CellHandle>().swap(fc);
+        Pairs<CellHandle> fc;  // then vertex -> cells, edge -> cells
+        fc.reserve(std::max(n_halffaces, cell_refs));
+        {
+            for (std::size_t c = 0; c < nc; ++c)
+                for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
+                    fc.emplace_back(halffaces[i].face().idx, CellHandle(c));
+            face_cells_ = Csr<CellHandle>::from_pairs(nf, fc);
+        }
+        {
+            Pairs<CellHandle>& vc = fc;
+            vc.clear();
+            Stamper<VertexHandle> in_cell(nv);
+            for (std::size_t c = 0; c < nc; ++c) {
+                const CellHandle ch(c);
+                for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
+                    for (VertexHandle v : k.face_vertices(halffaces[i].face()))
+                        if (in_cell.first(v, c)) vc.emplace_back(v.idx, ch);
+            }
+            vertex_cells_ = Csr<CellHandle>::from_pairs(nv, vc);
+        }
+        {
+            Pairs<CellHandle>& ec = fc;
+            ec.clear();
+            Stamper<EdgeHandle> in_cell(ne);
+            for (std::size_t c = 0; c < nc; ++c) {
+                const CellHandle ch(c);
+                for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
+                    for (EdgeHandle e : k.face_edges(halffaces[i].face()))
+                        if (in_cell.first(e, c)) ec.emplace_back(e.idx, ch);
+            }
+            edge_cells_ = Csr<CellHandle>::from_pairs(ne, ec);
+        }
+        Pairs<CellHandle>().swap(fc);
+    };
+    tbb::parallel_invoke(by_faces, by_cells);
 
     edge_boundary_.assign(ne, 0);
     vertex_boundary_.assign(nv, 0);

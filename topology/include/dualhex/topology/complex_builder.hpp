@@ -57,6 +57,13 @@ public:
     [[nodiscard]] std::size_t n_faces() const { return face_offsets_.size() - 1; }
     [[nodiscard]] std::size_t n_cells() const { return cell_offsets_.size() - 1; }
 
+    /// The arrays built so far (for callers that merge several builders' parts).
+    [[nodiscard]] const std::vector<LatticePoint>& positions() const { return positions_; }
+    [[nodiscard]] const std::vector<std::uint32_t>& face_offsets() const { return face_offsets_; }
+    [[nodiscard]] const std::vector<VertexHandle>& face_loops() const { return face_loops_; }
+    [[nodiscard]] const std::vector<std::uint32_t>& cell_offsets() const { return cell_offsets_; }
+    [[nodiscard]] const std::vector<HalfFaceHandle>& cell_halffaces() const { return cell_halffaces_; }
+
     /// The complex built so far (the builder stays usable).
     [[nodiscard]] CellComplex build() const&;
     /// The complex, moving the arrays out (the builder is left empty-ish: do not reuse).

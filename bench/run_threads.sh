@@ -1,0 +1,45 @@
+#!/bin/sh
+# Thread scaling of install (StrongRule) + clipped dual: bench/thread_scaling on the shared
+# strongly balanced sphere grids (or the grids given: FILE.leaves or flat:BASE), 1 and 2
+# threads (THREADS, e.g. THREADS=1,2,4), REPS repetitions each (default 5), one process per
+# grid. Prints per-phase wall seconds (median [min, max]: the spread says how noisy the
+# machine was) and a summary table. With CALLGRIND=1 it also counts instructions
+# (valgrind --tool=callgrind, one run per thread count; all threads' instructions summed),
+# the noise-free measure of the extra work parallel runs do. Not part of the test suite.
+#   bench/run_threads.sh [GRID.leaves | flat:BASE ...]
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+build="${BUILD_DIR:-$here/../build}"
+reps="${REPS:-5}"
+threads="${THREADS:-1,2}"
+cmake -S "$here/.." -B "$build" -DCMAKE_BUILD_TYPE=Release -DDUALHEX_BUILD_BENCH=ON >/dev/null
+cmake --build "$build" -j2 --target thread_scaling >/dev/null
+data="$here/../../shared/data/grids"
+if [ $# -eq 0 ]; then set -- "$data/sphere_strong_d5.leaves" "$data/sphere_strong_d6.leaves" "$data/sphere_strong_d7.leaves"; fi
+echo "machine: $(uname -n), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "date:    $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+out=$(mktemp)
+for g in "$@"; do
+  case "$g" in flat:*) args="--flat ${g#flat:}" ;; *) args="--grid $g" ;; esac
+  # shellcheck disable=SC2086
+  "$build/bench/thread_scaling" --reps "$reps" --threads "$threads" $args | tee -a "$out" | grep -v '^SCALING'
+done
+echo
+echo "wall seconds (median of $reps); total = install + Incidence + clipped dual; cpu = process CPU of the total"
+printf '%-18s %3s %9s %9s %7s %7s %7s %7s %7s %7s %7s %7s %6s\n' grid thr leaves hexes checks context install incid dual total cpu speedup Mhex/s
+awk '/^SCALING/ { printf "%-18s %3d %9d %9d %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %7.2f %6.2f\n", $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14 }' "$out"
+rm -f "$out"
+if [ "${CALLGRIND:-0}" = 1 ]; then
+  echo
+  echo "instructions (callgrind, one run, all threads)"
+  for g in "$@"; do
+    case "$g" in flat:*) args="--flat ${g#flat:}" ;; *) args="--grid $g" ;; esac
+    for t in $(echo "$threads" | tr ',' ' '); do
+      f=$(mktemp)
+      # shellcheck disable=SC2086
+      valgrind --tool=callgrind --callgrind-out-file="$f" "$build/bench/thread_scaling" --reps 1 --threads "$t" $args >/dev/null 2>&1
+      printf '%-40s %2d threads %15s Ir\n' "$(basename "$g")" "$t" "$(awk '/^summary:/ { print $2 }' "$f"*)"
+      rm -f "$f"*
+    done
+  done
+fi

@@ -1,0 +1,43 @@
+#pragma once
+// Internal: the windows of the compositional argument (compositional.hpp): the 8 parity
+// types, the enumeration of their distinct windows (compositional.cpp) and the run that
+// checks them, in parallel and class by class (compositional_run.cpp).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dualhex/checkers/compositional.hpp"
+#include "dualhex/install/element_templates.hpp"
+
+namespace dualhex::compositional_detail {
+
+using detail::Index3;
+constexpr int kLeaves = 8;  // the 2x2x2 leaves of B(g)
+
+// One parity type: the 8 leaves of B(g), g = parity, and the octants they read.
+struct WindowType {
+    std::array<int, 3> parity{};
+    std::array<LatticePoint, kLeaves> leaves;  // min corners, coarse-leaf units
+    std::vector<Index3> reads;                 // R(t)
+    std::array<std::vector<int>, kLeaves> read_index;  // per leaf: indices into reads
+    std::array<int, kLeaves> own{};            // per leaf: its own octant's index
+};
+
+[[nodiscard]] std::vector<int> reach_bits(const TransitionRule& rule);
+/// The lemma (compositional.hpp, 2) over every context it concerns, into result.
+void check_lemma(const TransitionRule& rule, CompositionalResult& result);
+[[nodiscard]] WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& rule);
+/// Every distinct window of a type (one witness pattern each: bit i = reads[i] fine).
+[[nodiscard]] std::vector<std::uint64_t> distinct_windows(const WindowType& t, const TransitionRule& rule, int& shared_count);
+/// B(g) for one pattern, translated so that g is the origin: [-U, U]^3.
+[[nodiscard]] ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
+                                                detail::TemplateCache& cache);
+/// The coarse leaves of that window with what the rule places there (build_window's
+/// coarse_leaves, without building). Throws what the rule throws.
+[[nodiscard]] std::vector<PlacedLeaf> coarse_placements(const WindowType& t, std::uint64_t pattern,
+                                                        const TransitionRule& rule);
+[[nodiscard]] std::string describe(const std::array<int, 3>& parity, const std::vector<Index3>& reads,
+                                   std::uint64_t pattern);
+
+}  // namespace dualhex::compositional_detail

@@ -1,0 +1,110 @@
+#pragma once
+// Internal: checking a family of configurations class by class (the weak tori and windows,
+// the strong tori and cube windows). Each class (an orbit of the configurations under the
+// domain's motions) has its first member as representative, which gets the full check;
+// every other member is built and proved to be the exact image of the representative's
+// complex (oriented_form.hpp: moved back by the inverse motion, it is the representative's
+// complex cell by cell, oriented face by oriented face). The check is invariant under the
+// domain's motions, so the member's report is its representative's, except what depends on
+// the placements themselves (the elements used, read from the member's own build) and its
+// mask. A member no motion proves congruent, or whose representative fails, is checked
+// itself: the coverage is that of checking every configuration. Parallel over members; every
+// report lands in its configuration's own slot, so the result does not depend on threads.
+#include <algorithm>
+#include <map>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "dualhex/checkers/configuration_report.hpp"
+#include "dualhex/checkers/torus_classes.hpp"
+#include "oriented_form.hpp"
+
+namespace dualhex::detail {
+
+inline TorusMotion inverse_of(const TorusMotion& m) { return m.inverse(); }
+inline CubeSymmetry inverse_of(const CubeSymmetry& s) { return s.inverse(); }
+
+/// Per configuration: its class's representative and a motion taking the representative's
+/// configuration to it (`moved(config, motion)`: the configuration the motion makes of it).
+template <class Motion>
+struct Congruence {
+    std::vector<std::size_t> representative;
+    std::vector<Motion> motion;
+};
+
+template <class Config, class Motion, class Moved>
+Congruence<Motion> congruence(const std::vector<Config>& all, const std::vector<Motion>& motions, Moved&& moved) {
+    Congruence<Motion> out;
+    std::map<Config, std::size_t> first;  // orbit key (smallest image) -> representative
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        Config key = all[i];
+        for (const Motion& m : motions) key = std::min(key, moved(all[i], m));
+        const std::size_t rep = first.emplace(key, i).first->second;
+        out.representative.push_back(rep);
+        out.motion.push_back(*std::find_if(motions.begin(), motions.end(),
+                                           [&](const Motion& m) { return moved(all[rep], m) == all[i]; }));
+    }
+    return out;
+}
+
+inline std::map<std::string, std::size_t> elements_of(const ConfigurationComplex& built) {
+    std::map<std::string, std::size_t> out;
+    for (const PlacedLeaf& leaf : built.coarse_leaves) ++out[leaf.placement ? leaf.placement->element : "hex"];
+    if (built.fine_hexes) out["fine"] = built.fine_hexes;
+    return out;
+}
+
+/// Every configuration's report: `check(i, built)` checks configuration i keeping its
+/// complex in `built`, `build(i)` only builds it (may throw), `form(complex, motion)` is the
+/// complex's oriented form moved by the motion.
+template <class Motion, class Check, class Build, class Form>
+std::vector<ConfigurationReport> check_by_congruence(const Congruence<Motion>& classes, Check&& check, Build&& build,
+                                                     Form&& form) {
+    const std::size_t n = classes.representative.size();
+    std::vector<ConfigurationReport> out(n);
+    std::vector<OrientedForm> forms(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        if (classes.representative[i] != i) return;
+        ConfigurationComplex built;
+        out[i] = check(i, built);
+        if (out[i].ok()) forms[i] = form(built.complex, Motion{});  // empty: members get full checks
+    });
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        const std::size_t rep = classes.representative[i];
+        if (rep == i) return;
+        if (out[rep].ok() && !forms[rep].empty()) {
+            try {
+                const ConfigurationComplex built = build(i);
+                if (form(built.complex, inverse_of(classes.motion[i])) == forms[rep]) {
+                    out[i] = out[rep];
+                    out[i].mask = built.mask;
+                    out[i].elements = elements_of(built);
+                    return;
+                }
+            } catch (const std::exception&) {  // the full check below reports it
+            }
+        }
+        ConfigurationComplex built;
+        out[i] = check(i, built);
+    });
+    return out;
+}
+
+/// The oriented form moved by a torus motion (positions reduced modulo the period) or by a
+/// symmetry about the origin.
+inline OrientedForm torus_form(const CellComplex& k, const TorusMotion& m, std::int64_t octant) {
+    return oriented_form(k, [&](const LatticePoint& p) { return m.apply(p, octant); }, m.symmetry.determinant() < 0);
+}
+inline OrientedForm symmetric_form(const CellComplex& k, const CubeSymmetry& s) {
+    return oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
+}
+
+/// The 48 symmetries (identity first).
+inline std::vector<CubeSymmetry> all_symmetries() {
+    std::vector<CubeSymmetry> out;
+    for (int i = 0; i < CubeSymmetry::kOrder; ++i) out.push_back(CubeSymmetry::from_index(i));
+    return out;
+}
+
+}  // namespace dualhex::detail

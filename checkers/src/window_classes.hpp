@@ -1,0 +1,47 @@
+#pragma once
+// Internal: congruence keys of the compositional windows (compositional.hpp), shared by the
+// window check (which checks one window per class and proves every other one its image) and
+// the window certificates (one certificate per class).
+//
+// A window is its 8 leaves, each fine, a plain hex or an element e placed by a world
+// symmetry W (the complex depends on W only up to e's own symmetries, so W is taken modulo
+// e's stabiliser). A symmetry s about g moves the leaf at box b to s(b) and W to s.W. The
+// class key is the smallest such image over the 48 symmetries. The key only groups: a
+// member is the image of its class's representative only if their exact lattice forms say
+// so (variants::complex_form).
+#include <array>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dualhex/checkers/configuration_report.hpp"
+#include "dualhex/schemes/element_library.hpp"
+
+namespace dualhex::detail {
+
+using WindowKey = std::array<int, 8>;
+
+// A placed element's code: its element (index in the library) and its world symmetry W
+// taken modulo the element's own symmetries (the smallest index among W.S, S in its
+// stabiliser). Read-only after construction, so threads may share one.
+class PlacementCodes {
+public:
+    explicit PlacementCodes(const ElementLibrary& library);
+    [[nodiscard]] int code(const std::string& element, const CubeSymmetry& W) const;
+
+private:
+    std::map<std::string, std::pair<int, std::vector<CubeSymmetry>>> stabiliser_;  // name -> (index, stabiliser)
+};
+
+/// The key of the window with these coarse leaves (min corners in coarse-leaf units, the
+/// window B(g) around g = parity) under symmetry s about g.
+[[nodiscard]] WindowKey window_image_key(const std::array<int, 3>& parity, const std::vector<PlacedLeaf>& coarse,
+                                         const CubeSymmetry& s, const PlacementCodes& codes);
+
+/// The class key (smallest image key) and the first symmetry giving it.
+[[nodiscard]] std::pair<WindowKey, CubeSymmetry> window_class_key(const std::array<int, 3>& parity,
+                                                                  const std::vector<PlacedLeaf>& coarse,
+                                                                  const PlacementCodes& codes);
+
+}  // namespace dualhex::detail
