@@ -46,6 +46,7 @@ void read_points(TextScanner& in, MeshFile& mesh) {
 }
 
 std::vector<RawCell> read_cells_classic(TextScanner& in, std::int64_t n, std::int64_t size) {
+    const int header_line = in.line();
     in.check_count(size, 1, "CELLS size");
     if (n > size) in.fail("CELLS count " + std::to_string(n) + " exceeds its size " + std::to_string(size));
     std::vector<RawCell> cells(static_cast<std::size_t>(n));
@@ -59,7 +60,7 @@ std::vector<RawCell> read_cells_classic(TextScanner& in, std::int64_t n, std::in
         for (auto& v : c.row) v = in.read_int("cell entry");
         used += 1 + k;
     }
-    if (used != size) in.fail("CELLS size " + std::to_string(size) + " but the rows hold " + std::to_string(used));
+    if (used != size) throw InputError(in.path(), header_line, "CELLS size " + std::to_string(size) + " but the rows hold " + std::to_string(used));
     return cells;
 }
 

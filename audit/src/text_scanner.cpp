@@ -58,7 +58,10 @@ bool TextScanner::at_end() {
 bool TextScanner::next(std::string_view& token) {
     skip_blanks();
     token_line_ = line_;
-    if (pos_ >= text_.size()) return false;
+    if (pos_ >= text_.size()) {  // the end: name the last line, not the empty one after it
+        if (!text_.empty() && text_.back() == '\n' && token_line_ > 1) --token_line_;
+        return false;
+    }
     const std::size_t start = pos_;
     while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_])) &&
            !(comment_ != 0 && text_[pos_] == comment_))
