@@ -1,7 +1,8 @@
 // dualhex audit FILE: reads someone's hex or polyhedral transition mesh (.vtk, .vtu, .mesh)
 // and runs the audit's checks (audit/include/dualhex/audit/audit.hpp), every violation
 // located; --certify FILE writes a certificate for the standalone checker.
-// Exit: 0 every check passed, 1 a check failed, 2 usage (or --certify refused), 3 bad input.
+// Exit: 0 every check passed, 1 a check failed (then no certificate either), 2 usage or
+// --certify refused (coordinates not dyadic, beyond 2^19 or coincident), 3 bad input.
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -25,11 +26,13 @@ struct AuditOptionsCli {
 // The certificate of an audited mesh: polyhedral -> `installation` on its bounding box
 // (subdivision, valences, all-hex dual: what `dualhex install --certify` claims); hex ->
 // `histogram` (the checker's always-checked conformity and closed cells, plus the counts).
-void write_audit_certificate(const AuditOptionsCli& opt, const audit::MeshFile& mesh, const audit::AuditReport& report) {
-    if (!report.ok()) throw UsageError("--certify: not certifying " + opt.input + ": the audit failed");
+// Returns the refusal, empty if written.
+std::string write_audit_certificate(const AuditOptionsCli& opt, const audit::MeshFile& mesh,
+                                    const audit::AuditReport& report) {
+    if (!report.ok()) return "the audit failed";
     std::string refusal;
     const auto cert = audit::certificate_complex(mesh, refusal);
-    if (!cert) throw UsageError("--certify: cannot certify " + opt.input + ": " + refusal);
+    if (!cert) return refusal;
     CertificateSpec spec;
     spec.name = "audit";
     if (report.mode == "polyhedral") {
@@ -43,7 +46,9 @@ void write_audit_certificate(const AuditOptionsCli& opt, const audit::MeshFile& 
                      std::to_string(cert->scale_exponent)};
     std::ofstream out = open_output(opt.certify, opt.force);
     write_certificate(out, cert->complex, spec);
+    out.flush();
     if (!out) throw std::runtime_error(opt.certify + ": write failed");
+    return {};
 }
 
 void run_audit(const AuditOptionsCli& opt) {
@@ -55,18 +60,21 @@ void run_audit(const AuditOptionsCli& opt) {
                    : opt.mode == "polyhedral" ? audit::AuditMode::Polyhedral
                                               : audit::AuditMode::Auto;
     const audit::AuditReport report = audit::audit_mesh(mesh, options);
-    if (!opt.certify.empty()) write_audit_certificate(opt, mesh, report);
+    const std::string refusal = opt.certify.empty() ? "" : write_audit_certificate(opt, mesh, report);
     if (opt.json) {
         nlohmann::json j = report.json();
-        if (!opt.certify.empty()) j["certificate"] = opt.certify;
+        if (!opt.certify.empty()) j["certificate"] = refusal.empty() ? nlohmann::json(opt.certify) : nlohmann::json(nullptr);
+        if (!refusal.empty()) j["certificate_refused"] = refusal;
         print_json(j);
     } else {
         std::fputs(report.text().c_str(), stdout);
-        if (!opt.certify.empty())
+        if (!opt.certify.empty() && refusal.empty())
             std::printf("wrote certificate %s (check it with dualhex-proof-checker --file %s)\n", opt.certify.c_str(),
                         opt.certify.c_str());
     }
+    if (!refusal.empty()) std::cerr << "error: --certify: not certifying " << opt.input << ": " << refusal << '\n';
     if (!report.ok()) throw Exit{kCheckFailed};
+    if (!refusal.empty()) throw Exit{kUsage};
 }
 
 }  // namespace

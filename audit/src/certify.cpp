@@ -35,15 +35,16 @@ std::optional<CertificateComplex> certificate_complex(const MeshFile& mesh, std:
         for (const auto& f : detail::cell_faces(c))
             for (std::int64_t p : f) used[static_cast<std::size_t>(p)] = 1;
     int k_max = 0;
+    std::size_t k_point = 0;  // a point needing 2^k_max
     for (std::size_t p = 0; p < mesh.points.size(); ++p)
         for (double x : mesh.points[p])
             if (used[p]) {
                 const int k = dyadic_exponent(x);
                 if (k < 0) {
-                    refusal = point_text(mesh, p) + " has a coordinate that is not a dyadic rational (x * 2^K integral)";
+                    refusal = point_text(mesh, p) + " has a coordinate x with no x * 2^K integral for K <= 64";
                     return std::nullopt;
                 }
-                k_max = std::max(k_max, k);
+                if (k > k_max) k_max = k, k_point = p;
             }
     std::vector<LatticePoint> positions(mesh.points.size());
     std::map<LatticePoint, std::size_t> first_at;
@@ -52,7 +53,9 @@ std::optional<CertificateComplex> certificate_complex(const MeshFile& mesh, std:
         for (int a = 0; a < 3; ++a) {
             const double s = std::ldexp(mesh.points[p][static_cast<std::size_t>(a)], k_max);
             if (std::fabs(s) > static_cast<double>(kCertificateCoordinateBound)) {
-                refusal = point_text(mesh, p) + " scaled by 2^" + std::to_string(k_max) + " exceeds the checker's bound 2^19";
+                refusal = "coordinates are integral only once scaled by 2^" + std::to_string(k_max) + " (" +
+                          point_text(mesh, k_point) + "), and then " + point_text(mesh, p) +
+                          " exceeds the checker's bound |x| <= 2^19";
                 return std::nullopt;
             }
             positions[p][a] = static_cast<std::int64_t>(s);
