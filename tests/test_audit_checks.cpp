@@ -164,6 +164,14 @@ TEST_F(AuditChecks, MaxListedBoundsTheListNotTheCount) {
     EXPECT_NE(r.text().find("... 2 more"), std::string::npos);
 }
 
+TEST_F(AuditChecks, EmptyMeshFailsInBothModes) {
+    const std::string p = write("empty.vtk", audit_test::vtk_text({{0, 0, 0}}, {}));
+    EXPECT_FALSE(check(audit_mesh(read_mesh(p)), "hexahedra").passed());
+    AuditOptions o;
+    o.mode = AuditMode::Polyhedral;
+    EXPECT_FALSE(audit_mesh(read_mesh(p), o).ok());
+}
+
 TEST_F(AuditChecks, CubeComplexPassesEveryPolyhedralCheck) {
     const AuditReport r = audit_cubes(audit_test::unit_cubes(3));
     EXPECT_EQ(r.mode, "polyhedral");

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "audit_modes.hpp"
+#include "dualhex/grid/input_error.hpp"
 #include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/geometry/quality.hpp"
 
@@ -23,6 +24,9 @@ struct Hexes {
 Hexes check_cells(const MeshFile& mesh, std::size_t max, AuditReport& r) {
     CheckResult is_hex{"hexahedra", "every volume cell a VTK_HEXAHEDRON", 0, {}};
     CheckResult distinct{"distinct-vertices", "every hexahedron with 8 distinct point ids", 0, {}};
+    if (mesh.cells.empty()) add_violation(is_hex, max, Violation{"the file has no volume cells", -1, 0, {}, {}});
+    if (mesh.points.size() > static_cast<std::size_t>(INT32_MAX))  // HexMesh ids are int
+        throw InputError(mesh.path, 0, std::to_string(mesh.points.size()) + " points: more than the hex checks' 2^31 - 1");
     Hexes h;
     for (const auto& p : mesh.points) h.mesh.points.emplace_back(p[0], p[1], p[2]);
     for (const MeshCell& c : mesh.cells) {

@@ -97,6 +97,9 @@ void audit_polyhedral(const MeshFile& mesh, const AuditOptions& options, AuditRe
         for (VK kind : s.kinds) check_of[kind] = r.checks.size();
         r.checks.push_back({s.name, s.description, 0, {}});
     }
+    if (mesh.cells.empty())
+        add_violation(r.checks[check_of.at(VK::CellNotSphere)], options.max_listed,
+                      Violation{"the file has no volume cells", -1, 0, {}, {}});
     for (const dualhex::Violation& v : report.violations) {
         CheckResult& c = r.checks[check_of.at(v.kind)];
         ++c.violations;
