@@ -6,3 +6,4 @@ dualhex_add_test(test_audit_cli SOURCES test_audit_cli.cpp DEPS dualhex::geometr
 target_compile_definitions(test_audit_cli PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>"
                                                   DUALHEX_PROOF_CHECKER="$<TARGET_FILE:dualhex-proof-checker>")
 add_dependencies(test_audit_cli dualhex dualhex-proof-checker)
+dualhex_add_test(test_audit_robustness SOURCES test_audit_robustness.cpp DEPS dualhex::audit dualhex::geometry)
