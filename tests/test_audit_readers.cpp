@@ -3,6 +3,8 @@
 // and malformed files are refused with an InputError naming the file and line.
 #include <sys/stat.h>
 
+#include <cstring>
+
 #include <gtest/gtest.h>
 
 #include "dualhex/audit/read_mesh.hpp"
@@ -116,6 +118,50 @@ TEST_F(AuditReaders, VtuBinaryEqualsAscii) {
     }
 }
 
+// Big-endian bytes of `values` as `Int` (or double).
+template <class T, class Range>
+std::string be_bytes(const Range& values) {
+    std::string s;
+    for (auto v : values) {
+        const T t = static_cast<T>(v);
+        std::uint64_t u = 0;
+        std::memcpy(&u, &t, sizeof(T));
+        for (int b = static_cast<int>(sizeof(T)) - 1; b >= 0; --b) s += static_cast<char>((u >> (8 * b)) & 0xff);
+    }
+    return s;
+}
+
+// The 2x1x1 block as BINARY legacy files, classic (CELLS rows, int32) and version 5.1
+// (OFFSETS / CONNECTIVITY vtktypeint64, as meshio writes): the same mesh as the ASCII writer's.
+TEST_F(AuditReaders, VtkLegacyBinaryEqualsAscii) {
+    const auto m = geometry_test::hex_block(2, 1, 1, 0.25).mesh;
+    std::vector<double> coords;
+    for (const auto& p : m.points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+    std::vector<long> rows, conn, offsets{0}, types(m.hexes.size(), 12);
+    for (const auto& h : m.hexes) {
+        rows.push_back(8);
+        rows.insert(rows.end(), h.begin(), h.end());
+        conn.insert(conn.end(), h.begin(), h.end());
+        offsets.push_back(static_cast<long>(conn.size()));
+    }
+    const std::string head = "# vtk DataFile Version 3.0\nbinary\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 12 double\n" +
+                             be_bytes<double>(coords) + "\n";
+    const std::string classic = head + "CELLS 2 18\n" + be_bytes<std::int32_t>(rows) + "\nCELL_TYPES 2\n" +
+                                be_bytes<std::int32_t>(types) + "\n";
+    expect_same_hexes(read_mesh(write("classic.vtk", classic)), m);
+    const std::string v51 = head + "CELLS 3 16\nOFFSETS vtktypeint64\n" + be_bytes<std::int64_t>(offsets) +
+                            "\nCONNECTIVITY vtktypeint64\n" + be_bytes<std::int64_t>(conn) + "\nCELL_TYPES 2\n" +
+                            be_bytes<std::int32_t>(types) + "\n";
+    expect_same_hexes(read_mesh(write("v51.vtk", v51)), m);
+    // Cut inside the binary cell types: refused as truncated.
+    try {
+        (void)read_mesh(write("cut.vtk", classic.substr(0, classic.size() - 3)));
+        FAIL() << "truncated binary file accepted";
+    } catch (const dualhex::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("truncated binary CELL_TYPES"), std::string::npos) << e.what();
+    }
+}
+
 // A polyhedral VTU (faces / faceoffsets, ASCII) mixing a polyhedron and a hexahedron.
 TEST_F(AuditReaders, VtuPolyhedraThroughFacesArrays) {
     const auto m = geometry_test::hex_block(2, 1, 1).mesh;
@@ -161,7 +207,8 @@ TEST_F(AuditMalformed, RefusedWithFileLineAndValue) {
     const std::string pts = "POINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
     const std::string cells = "CELLS 1 5\n4 0 1 2 3\n";
     const std::vector<Malformed> cases{
-        {"truncated.vtk", head + "POINTS 4 double\n0 0 0\n1 0 0\n0 1", 8, "end of file"},
+        {"truncated.vtk", head + "POINTS 2 double\n0.000000 0.000000 0.000000\n1.000000", 7, "end of file"},
+        {"short.vtk", head + "POINTS 4 double\n0 0 0\n1 0 0\n0 1", 5, "exceeds what the rest of the file"},
         {"huge_count.vtk", head + "POINTS 1000000000 double\n0 0 0\n", 5, "1000000000"},
         {"bad_number.vtk", head + "POINTS 4 double\n0 0 0\n1 0 0\n0 1 zero\n0 0 1\n", 8, "'zero'"},
         {"bad_type.vtk", head + pts + cells + "CELL_TYPES 1\n99\n", 13, "99"},

@@ -85,6 +85,24 @@ std::string_view TextScanner::rest_of_line() {
     return s;
 }
 
+std::string_view TextScanner::take_bytes(std::size_t n, std::string_view what) {
+    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\r')) ++pos_;
+    if (pos_ < text_.size() && text_[pos_] != '\n')
+        fail("unexpected " + quote(text_.substr(pos_, 1)) + " before the binary " + std::string(what));
+    if (pos_ < text_.size()) {
+        ++pos_;
+        ++line_;
+    }
+    token_line_ = line_;
+    if (text_.size() - pos_ < n)
+        fail("truncated binary " + std::string(what) + ": " + std::to_string(n) + " bytes expected, " +
+             std::to_string(text_.size() - pos_) + " left");
+    const std::string_view block = text_.substr(pos_, n);
+    pos_ += n;
+    for (char c : block) line_ += c == '\n' ? 1 : 0;
+    return block;
+}
+
 std::int64_t TextScanner::read_int(std::string_view what) {
     const std::string_view t = expect(what);
     std::int64_t v = 0;

@@ -35,6 +35,11 @@ public:
     /// stops a bad count from allocating before the truncation is noticed.
     void check_count(std::int64_t count, std::int64_t tokens_each, std::string_view what) const;
 
+    /// Binary data: skips the rest of the current line (blanks only) and its newline, then
+    /// returns the next `n` bytes (InputError "truncated" if fewer are left). Newline bytes
+    /// inside still count as lines, so later line numbers match a byte-wise line count.
+    std::string_view take_bytes(std::size_t n, std::string_view what);
+
     [[nodiscard]] int line() const { return token_line_; }  ///< line of the last token
     [[nodiscard]] const std::string& path() const { return path_; }
     [[noreturn]] void fail(const std::string& message) const;

@@ -1,10 +1,11 @@
 #pragma once
 // Strict readers of volume meshes into a MeshFile (mesh_file.hpp).
 //
-//   .vtk   VTK legacy, DATASET UNSTRUCTURED_GRID, ASCII, file versions 2.0 - 4.2 (CELLS n
+//   .vtk   VTK legacy, DATASET UNSTRUCTURED_GRID, ASCII or BINARY (big-endian): CELLS n
 //          size with one "count ids..." row per cell, a VTK_POLYHEDRON row being its face
-//          stream "size nfaces n0 ids... n1 ids..."), then CELL_TYPES. POINT_DATA /
-//          CELL_DATA / FIELD after the cells are ignored.
+//          stream "size nfaces n0 ids... n1 ids...", then CELL_TYPES; or the version-5
+//          layout (OFFSETS / CONNECTIVITY, no polyhedra). POINT_DATA / CELL_DATA / FIELD
+//          after the cells are ignored.
 //   .vtu   VTK XML UnstructuredGrid, one Piece; DataArrays format="ascii" or "binary"
 //          (inline base64, header_type UInt32 or UInt64, no compressor); polyhedra through
 //          the "faces" / "faceoffsets" arrays.
