@@ -74,7 +74,7 @@ TEST_F(AuditReaders, ReadsWhatTheComplexWriterWrites) {
     EXPECT_EQ(f.cells.back().faces.size(), 10U);
 }
 
-// The 2x1x1 block as VTU with every array inline base64 (UInt64 header, header and data
+// The 2x1x1 block as VTU with every array inline base64 or appended (UInt64 header, header and data
 // encoded separately as VTK does) and as ASCII: the same mesh.
 TEST_F(AuditReaders, VtuBinaryEqualsAscii) {
     const auto m = geometry_test::hex_block(2, 1, 1, 0.5).mesh;
@@ -103,6 +103,29 @@ TEST_F(AuditReaders, VtuBinaryEqualsAscii) {
         array("Int32", "offsets", audit_test::le_bytes<std::int32_t>(offsets)) +
         array("UInt8", "types", audit_test::le_bytes<std::uint8_t>(types)) +
         "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    // The same arrays appended (raw bytes, and base64 with header and data encoded apart).
+    const std::vector<std::pair<std::string, std::string>> blocks{
+        {"<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\"", coord_bytes},
+        {"<DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"", audit_test::le_bytes<std::int64_t>(conn)},
+        {"<DataArray type=\"Int32\" Name=\"offsets\" format=\"appended\" offset=\"", audit_test::le_bytes<std::int32_t>(offsets)},
+        {"<DataArray type=\"UInt8\" Name=\"types\" format=\"appended\" offset=\"", audit_test::le_bytes<std::uint8_t>(types)}};
+    for (const bool raw : {true, false}) {
+        std::string arrays[4], data;
+        for (std::size_t i = 0; i < blocks.size(); ++i) {
+            arrays[i] = blocks[i].first + std::to_string(data.size()) + "\"/>\n";
+            const std::string header = audit_test::le_bytes<std::uint64_t>(std::vector<std::uint64_t>{blocks[i].second.size()});
+            data += raw ? header + blocks[i].second : audit_test::base64(header) + audit_test::base64(blocks[i].second);
+        }
+        const std::string appended =
+            "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+            "<UnstructuredGrid>\n<Piece NumberOfPoints=\"12\" NumberOfCells=\"2\">\n<Points>\n" + arrays[0] +
+            "</Points>\n<Cells>\n" + arrays[1] + arrays[2] + arrays[3] + "</Cells>\n</Piece>\n</UnstructuredGrid>\n"
+            "<AppendedData encoding=\"" + (raw ? "raw" : "base64") + "\">\n  _" + data + "\n</AppendedData>\n</VTKFile>\n";
+        SCOPED_TRACE(raw ? "raw" : "base64");
+        expect_same_hexes(read_mesh(write("app.vtu", appended)), m);
+        // cut inside the appended data: refused
+        EXPECT_THROW((void)read_mesh(write("app_cut.vtu", appended.substr(0, appended.size() - 40))), dualhex::InputError);
+    }
     const MeshFile bin = read_mesh(write("b.vtu", text));
     expect_same_hexes(bin, m);
     expect_same_hexes(read_mesh(path("a.vtu")), m);

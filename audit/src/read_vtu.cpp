@@ -1,5 +1,7 @@
 // VTK XML UnstructuredGrid reader: one Piece, Points, and the Cells arrays connectivity,
 // offsets, types (and faces / faceoffsets for VTK_POLYHEDRON cells).
+#include <algorithm>
+#include <cctype>
 #include <optional>
 #include <string>
 
@@ -92,10 +94,32 @@ void assemble_cells(const std::string& path, const CellArrays& a, std::size_t n_
                                                   " values, the offsets use " + std::to_string(prev));
 }
 
+// <AppendedData encoding="raw|base64"> then blanks and '_': the data starts after the '_'.
+void read_appended_header(const std::string& path, const std::string& file, std::size_t at, detail::VtuFileInfo& info) {
+    XmlScanner xml(path, std::string_view(file).substr(at, file.find('>', at) == std::string::npos ? std::string::npos
+                                                                                                 : file.find('>', at) - at + 1));
+    XmlTag tag;
+    const int line = 1 + static_cast<int>(std::count(file.begin(), file.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    if (!xml.next(tag)) throw InputError(path, line, "unterminated <AppendedData>");
+    const std::string encoding = attribute(tag, "encoding");
+    if (encoding != "raw" && encoding != "base64")
+        throw InputError(path, line, "<AppendedData> encoding '" + encoding + "' (expected raw or base64)");
+    const std::size_t underscore = file.find('_', at + tag.end);
+    if (underscore == std::string::npos) throw InputError(path, line, "<AppendedData> without its '_' marker");
+    for (std::size_t i = at + tag.end; i < underscore; ++i)
+        if (!std::isspace(static_cast<unsigned char>(file[i]))) throw InputError(path, line, "text before the '_' of <AppendedData>");
+    info.appended = std::string_view(file).substr(underscore + 1);
+    info.appended_base64 = encoding == "base64";
+    info.appended_line = line;
+}
+
 }  // namespace
 
 MeshFile read_vtu(const std::string& path) {
-    const std::string text = detail::read_regular_file(path);
+    const std::string file = detail::read_regular_file(path);
+    // Appended binary may hold any byte: the XML is scanned only up to <AppendedData>.
+    const std::size_t appended_at = file.find("<AppendedData");
+    const std::string_view text = std::string_view(file).substr(0, appended_at);
     XmlScanner xml(path, text);
     MeshFile mesh;
     mesh.path = path;
@@ -108,7 +132,8 @@ MeshFile read_vtu(const std::string& path) {
     if (attribute(tag, "byte_order") == "BigEndian") xml.fail(tag.begin, "byte_order BigEndian is not supported");
     const std::string header = attribute(tag, "header_type");
     if (!header.empty() && header != "UInt32" && header != "UInt64") xml.fail(tag.begin, "bad header_type '" + header + "'");
-    const detail::VtuFileInfo info{header == "UInt64"};
+    detail::VtuFileInfo info{header == "UInt64", {}, false, 0};
+    if (appended_at != std::string::npos) read_appended_header(path, file, appended_at, info);
 
     std::int64_t n_points = -1, n_cells = -1;
     std::string section;  // the enclosing Points / Cells / PointData / CellData
@@ -117,12 +142,10 @@ MeshFile read_vtu(const std::string& path) {
     while (!piece_done && xml.next(tag)) {
         if (tag.name == "Piece" && !tag.closing) {
             if (n_points >= 0) xml.fail(tag.begin, "more than one <Piece> is not supported");
-            n_points = count_attribute(xml, tag, "NumberOfPoints", text.size());
-            n_cells = count_attribute(xml, tag, "NumberOfCells", text.size());
+            n_points = count_attribute(xml, tag, "NumberOfPoints", file.size());
+            n_cells = count_attribute(xml, tag, "NumberOfCells", file.size());
         } else if (tag.name == "Piece") {
             piece_done = true;
-        } else if (tag.name == "AppendedData") {
-            xml.fail(tag.begin, "<AppendedData> is not supported (write ascii or binary DataArrays)");
         } else if (tag.name == "Points" || tag.name == "Cells" || tag.name == "PointData" || tag.name == "CellData") {
             section = tag.closing || tag.self_closing ? "" : tag.name;
         } else if (tag.name == "DataArray" && !tag.closing) {

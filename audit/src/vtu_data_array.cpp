@@ -1,5 +1,6 @@
 #include "vtu_data_array.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstring>
 
@@ -59,6 +60,10 @@ bool decode_value(const std::string& t, const unsigned char* p, bool as_int, dou
     return true;
 }
 
+// The header and data of the appended block at `offset_text` (false if out of bounds).
+bool appended_block(const VtuFileInfo& info, const std::string& offset_text, int header,
+                    std::vector<unsigned char>& bytes);
+
 }  // namespace
 
 bool decode_base64(std::string_view text, std::vector<unsigned char>& out) {
@@ -88,6 +93,38 @@ bool decode_base64(std::string_view text, std::vector<unsigned char>& out) {
     return n == 0;
 }
 
+namespace {
+bool appended_block(const VtuFileInfo& info, const std::string& offset_text, int header,
+                    std::vector<unsigned char>& bytes) {
+    std::uint64_t offset = 0;
+    const auto [ptr, ec] = std::from_chars(offset_text.data(), offset_text.data() + offset_text.size(), offset);
+    const std::string_view data = info.appended;
+    if (offset_text.empty() || ec != std::errc() || ptr != offset_text.data() + offset_text.size() || offset > data.size())
+        return false;
+    const std::string_view rest = data.substr(static_cast<std::size_t>(offset));
+    if (!info.appended_base64) {
+        if (rest.size() < static_cast<std::size_t>(header)) return false;
+        const std::uint64_t n = load_le(reinterpret_cast<const unsigned char*>(rest.data()), header);
+        if (n > rest.size() - static_cast<std::size_t>(header)) return false;
+        bytes.assign(rest.begin(), rest.begin() + header + static_cast<std::ptrdiff_t>(n));
+        return true;
+    }
+    // base64: the header's own block (4 chars per 3 bytes), then the data's
+    const std::size_t header_chars = (static_cast<std::size_t>(header) + 2) / 3 * 4;
+    std::vector<unsigned char> h;
+    if (rest.size() < header_chars || !decode_base64(rest.substr(0, header_chars), h) || h.size() < static_cast<std::size_t>(header))
+        return false;
+    const std::uint64_t n = load_le(h.data(), header);
+    const std::uint64_t data_chars = (n + 2) / 3 * 4;
+    if (data_chars > rest.size() - header_chars) return false;
+    std::vector<unsigned char> d;
+    if (!decode_base64(rest.substr(header_chars, static_cast<std::size_t>(data_chars)), d) || d.size() != n) return false;
+    bytes.assign(h.begin(), h.begin() + header);
+    bytes.insert(bytes.end(), d.begin(), d.end());
+    return true;
+}
+}  // namespace
+
 DataArrayValues read_data_array(XmlScanner& xml, const XmlTag& tag, const VtuFileInfo& info, std::size_t expected,
                                 bool as_int, const std::string& what) {
     DataArrayValues v;
@@ -104,7 +141,7 @@ DataArrayValues read_data_array(XmlScanner& xml, const XmlTag& tag, const VtuFil
     const bool any_count = expected == kAnyCount;
     if (any_count) expected = 0;
     // Every value takes >= 2 bytes (ascii) or >= 1 byte as base64: checked before allocating.
-    if (expected > body.size()) xml.fail(tag.begin, what + ": " + std::to_string(expected) +
+    if (format != "appended" && expected > body.size()) xml.fail(tag.begin, what + ": " + std::to_string(expected) +
                                                      " values expected, more than the array's " +
                                                      std::to_string(body.size()) + " bytes can hold");
     if (format == "ascii") {
@@ -130,11 +167,16 @@ DataArrayValues read_data_array(XmlScanner& xml, const XmlTag& tag, const VtuFil
         }
         return v;
     }
-    if (format == "appended") xml.fail(tag.begin, what + ": format=\"appended\" is not supported (write ascii or binary)");
-    if (format != "binary") xml.fail(tag.begin, what + ": unknown DataArray format '" + format + "'");
-    std::vector<unsigned char> bytes;
-    if (!decode_base64(body, bytes)) xml.fail(tag.begin, what + ": invalid base64 data");
     const int header = info.header_uint64 ? 8 : 4, size = type_size(type);
+    std::vector<unsigned char> bytes;
+    if (format == "appended") {
+        if (!appended_block(info, attr("offset"), header, bytes))
+            xml.fail(tag.begin, what + ": bad appended offset '" + attr("offset") + "' or truncated <AppendedData>");
+    } else if (format == "binary") {
+        if (!decode_base64(body, bytes)) xml.fail(tag.begin, what + ": invalid base64 data");
+    } else {
+        xml.fail(tag.begin, what + ": unknown DataArray format '" + format + "'");
+    }
     if (bytes.size() < static_cast<std::size_t>(header)) xml.fail(tag.begin, what + ": binary data without its header");
     const std::uint64_t n_bytes = load_le(bytes.data(), header);
     if (any_count && n_bytes % static_cast<std::uint64_t>(size) == 0) expected = n_bytes / static_cast<std::uint64_t>(size);

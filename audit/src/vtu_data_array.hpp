@@ -1,7 +1,9 @@
 #pragma once
-// The values of one VTU DataArray: format="ascii" (whitespace-separated numbers) or
+// The values of one VTU DataArray: format="ascii" (whitespace-separated numbers),
 // format="binary" (inline base64 of a byte-count header, UInt32 or UInt64, then the
-// little-endian values; header and data may be encoded as one base64 block or two).
+// little-endian values; header and data may be encoded as one base64 block or two) or
+// format="appended" offset="N" (the same header and values at byte N of <AppendedData>,
+// raw, or base64 with header and data encoded separately).
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -13,6 +15,11 @@ namespace dualhex::audit::detail {
 
 struct VtuFileInfo {
     bool header_uint64 = false;  ///< header_type="UInt64"
+    /// <AppendedData>: the bytes after its '_' (to the end of the file), its encoding, and
+    /// the line of the '_' (for messages). Empty data: no appended section.
+    std::string_view appended;
+    bool appended_base64 = false;
+    int appended_line = 0;
 };
 
 struct DataArrayValues {

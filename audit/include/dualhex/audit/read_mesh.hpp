@@ -6,9 +6,9 @@
 //          stream "size nfaces n0 ids... n1 ids...", then CELL_TYPES; or the version-5
 //          layout (OFFSETS / CONNECTIVITY, no polyhedra). POINT_DATA / CELL_DATA / FIELD
 //          after the cells are ignored.
-//   .vtu   VTK XML UnstructuredGrid, one Piece; DataArrays format="ascii" or "binary"
-//          (inline base64, header_type UInt32 or UInt64, no compressor); polyhedra through
-//          the "faces" / "faceoffsets" arrays.
+//   .vtu   VTK XML UnstructuredGrid, one Piece; DataArrays format="ascii", "binary"
+//          (inline base64) or "appended" (<AppendedData> raw or base64); header_type UInt32
+//          or UInt64, no compressor; polyhedra through the "faces" / "faceoffsets" arrays.
 //   .mesh  MEDIT (ASCII, MeshVersionFormatted 1 or 2, Dimension 3): Vertices, Tetrahedra,
 //          Prisms, Pyramids, Hexahedra (1-based ids, a reference per entry); Edges,
 //          Triangles, Quadrilaterals, Corners, Ridges, Required* are counted as
