@@ -126,6 +126,14 @@ TEST_F(AuditCli, CertifyRefusedForNonDyadicOrHugeCoordinates) {
     EXPECT_EQ(r.rc, 2) << r.err;
     EXPECT_NE(r.err.find("2^19"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(path("h.cert")));
+    // every |x| <= 2^19, but the extent 2^19 + 2 exceeds the checker's box bound
+    const double h = bound / 2 + 1;
+    dualhex::geometry::write_vtk_legacy(path("wide.vtk"),
+                                        geometry_test::hex_block(2, 1, 1, h, Eigen::Vector3d(-h, 0, 0)).mesh);
+    r = audit({path("wide.vtk"), "--certify", path("w.cert")});
+    EXPECT_EQ(r.rc, 2) << r.err;
+    EXPECT_NE(r.err.find("box extent 2^19"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("w.cert")));
 }
 
 }  // namespace

@@ -77,6 +77,12 @@ std::optional<CertificateComplex> certificate_complex(const MeshFile& mesh, std:
             out.lo[a] = std::min(out.lo[a], q[a]);
             out.hi[a] = std::max(out.hi[a], q[a]);
         }
+    for (int a = 0; a < 3; ++a)
+        if (out.hi[a] - out.lo[a] > kCertificateCoordinateBound) {
+            refusal = "the scaled points span " + std::to_string(out.hi[a] - out.lo[a]) + " along axis " +
+                      std::to_string(a) + ", more than the checker's box extent 2^19";
+            return std::nullopt;
+        }
     return out;
 }
 

@@ -4,7 +4,8 @@
 //
 // Coordinates must be dyadic: x * 2^K an integer for one K in [0, 64] (dualhex's writers
 // write lattice points times 1/2^depth, which is exact in binary). The smallest such K is
-// used; every scaled coordinate must satisfy |x| <= 2^19 (the checker's bound) and the
+// used; every scaled coordinate must satisfy |x| <= 2^19, and the bounding box an extent
+// <= 2^19 on each axis (the checker's bounds), and the
 // points used by cells must be pairwise distinct (the checker requires distinct
 // positions). Otherwise the certificate is refused with the reason.
 #include <cstdint>
