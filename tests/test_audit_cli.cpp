@@ -1,5 +1,5 @@
 // `dualhex audit` run as a process: dualhex's own outputs (`dualhex install`, `dualhex mesh`)
-// pass; the polyhedral one certifies and the standalone checker verifies the certificate; a
+// pass (the hex mesh's interior edge valences are the complex's face sizes); the polyhedral one certifies and the standalone checker verifies the certificate; a
 // defect exits 1 with its location; a malformed file exits 3 with file:line; --certify is
 // refused (exit 2, no file) for non-dyadic, out-of-bound or failing meshes.
 #include <gtest/gtest.h>
@@ -60,7 +60,11 @@ TEST_F(AuditCli, InstallOutputsPassAndThePolyhedralOneIsCertified) {
 
     const ProcessResult hex = audit({path("inst.hex.vtk"), "--json"});
     ASSERT_EQ(hex.rc, 0) << hex.out << hex.err;
-    EXPECT_EQ(nlohmann::json::parse(hex.out)["mode"], "hex");
+    const auto h = nlohmann::json::parse(hex.out);
+    EXPECT_EQ(h["mode"], "hex");
+    // Duality, across the two modes' independent code: every primal k-gon is an interior
+    // edge of k hexes of the clipped dual (the clipped dual keeps the boundary).
+    EXPECT_EQ(h["statistics"]["interior_edge_valences"], j["statistics"]["face_sizes"]);
 }
 
 TEST_F(AuditCli, MeshOutputsPassInEveryFormat) {
