@@ -54,6 +54,8 @@ TEST_F(AuditChecks, UniformBlockPassesEveryHexCheck) {
     EXPECT_EQ(r.mode, "hex");
     EXPECT_TRUE(r.ok()) << r.text();
     EXPECT_EQ(r.checks.size(), 8U);
+    EXPECT_EQ(check(r, "not-inverted").checked, 12U);
+    EXPECT_EQ(check(r, "boundary-edges").checked, r.statistics["boundary_edges"].get<std::size_t>());
     // interior edges: x (3*1*1) + y (2*2*1) + z (2*1*2), each in 4 hexes
     EXPECT_EQ(r.statistics["interior_edge_valences"], (nlohmann::json{{"4", 11}}));
     EXPECT_EQ(r.statistics["hex_components"], (nlohmann::json{12}));
@@ -180,6 +182,8 @@ TEST_F(AuditChecks, CubeComplexPassesEveryPolyhedralCheck) {
     EXPECT_EQ(r.statistics["interior_vertices"], 8);
     EXPECT_EQ(r.statistics["interior_dual_edge_valences"], (nlohmann::json{{"4", 6}}));
     EXPECT_EQ(r.statistics["checked"]["interior_vertices"], 8);
+    EXPECT_EQ(check(r, "vertex-valence").checked, 8U);  // a PASS says over how many
+    EXPECT_EQ(check(r, "cells-closed").checked, 27U);
 }
 
 // The 4 cubes around the +x edge of the centre of [0,2]^3 as one cell: that edge is gone.

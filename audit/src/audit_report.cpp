@@ -75,7 +75,8 @@ std::string AuditReport::text() const {
     for (const auto& [k, v] : statistics.items()) print_statistic(os, k, v);
     os << "checks:\n";
     for (const CheckResult& c : checks) {
-        os << "  " << (c.passed() ? "PASS " : "FAIL ") << c.name << " (" << c.description << ")";
+        os << "  " << (c.passed() ? "PASS " : "FAIL ") << c.name << " (" << c.description << "; " << c.checked << ' '
+           << c.checked_what << " checked)";
         if (!c.passed()) os << ": " << c.violations << " violation" << (c.violations == 1 ? "" : "s");
         os << '\n';
         for (const Violation& v : c.first) os << "    " << describe(v) << '\n';
@@ -99,6 +100,8 @@ nlohmann::json AuditReport::json() const {
                                {"description", c.description},
                                {"passed", c.passed()},
                                {"violations", c.violations},
+                               {"checked", c.checked},
+                               {"checked_what", c.checked_what},
                                {"listed", listed}});
     }
     return {{"file", path},       {"format", format},         {"mode", mode},

@@ -14,6 +14,13 @@ namespace {
 
 using geometry::HexMesh;
 
+CheckResult named(std::string name, std::string description) {
+    CheckResult c;
+    c.name = std::move(name);
+    c.description = std::move(description);
+    return c;
+}
+
 // The hexes with 8 distinct ids, as a HexMesh over all file points; `file_cell[h]` is the
 // file index of hex h.
 struct Hexes {
@@ -22,8 +29,8 @@ struct Hexes {
 };
 
 Hexes check_cells(const MeshFile& mesh, std::size_t max, AuditReport& r) {
-    CheckResult is_hex{"hexahedra", "every volume cell a VTK_HEXAHEDRON", 0, {}};
-    CheckResult distinct{"distinct-vertices", "every hexahedron with 8 distinct point ids", 0, {}};
+    CheckResult is_hex = named("hexahedra", "every volume cell a VTK_HEXAHEDRON");
+    CheckResult distinct = named("distinct-vertices", "every hexahedron with 8 distinct point ids");
     if (mesh.cells.empty()) add_violation(is_hex, max, Violation{"the file has no volume cells", -1, 0, {}, {}});
     if (mesh.points.size() > static_cast<std::size_t>(INT32_MAX))  // HexMesh ids are int
         throw InputError(mesh.path, 0, std::to_string(mesh.points.size()) + " points: more than the hex checks' 2^31 - 1");
@@ -47,6 +54,11 @@ Hexes check_cells(const MeshFile& mesh, std::size_t max, AuditReport& r) {
         h.mesh.hexes.push_back(q);
         h.file_cell.push_back(cell);
     }
+    is_hex.checked = mesh.cells.size();
+    is_hex.checked_what = "volume cells";
+    distinct.checked = static_cast<std::size_t>(std::count_if(mesh.cells.begin(), mesh.cells.end(),
+                                                              [](const MeshCell& c) { return c.type == kVtkHexahedron; }));
+    distinct.checked_what = "hexahedra";
     r.checks.push_back(std::move(is_hex));
     r.checks.push_back(std::move(distinct));
     if (h.mesh.hexes.size() != mesh.cells.size())
@@ -57,20 +69,26 @@ Hexes check_cells(const MeshFile& mesh, std::size_t max, AuditReport& r) {
 
 void check_boundary(const MeshFile& mesh, const Hexes& h, std::size_t max, AuditReport& r) {
     const geometry::BoundaryDefects b = geometry::boundary_defects(h.mesh.hexes, h.mesh.points.size());
-    CheckResult faces{"conforming-faces", "every quad in <= 2 hexes, in 2 with opposite directions", 0, {}};
+    CheckResult faces = named("conforming-faces", "every quad in <= 2 hexes, in 2 with opposite directions");
     for (const auto& f : b.face_defects)
         add_violation(faces, max, at_points(mesh, f.hexes >= 3 ? "quad in " + std::to_string(f.hexes) + " hexes"
                                                                 : "quad in 2 hexes with the same direction",
                                             {f.corners.begin(), f.corners.end()}));
-    CheckResult edges{"boundary-edges", "every boundary edge in exactly 2 boundary quads", 0, {}};
+    CheckResult edges = named("boundary-edges", "every boundary edge in exactly 2 boundary quads");
     for (const auto& e : b.non_manifold_edges)
         add_violation(edges, max, at_points(mesh, "boundary edge in " + std::to_string(e.quads) + " boundary quads", {e.a, e.b}));
-    CheckResult orient{"boundary-orientation", "the 2 boundary quads at an edge traverse it oppositely", 0, {}};
+    CheckResult orient = named("boundary-orientation", "the 2 boundary quads at an edge traverse it oppositely");
     for (const auto& e : b.misoriented_edges)
         add_violation(orient, max, at_points(mesh, "boundary quads traverse the edge the same way", {e[0], e[1]}));
-    CheckResult verts{"boundary-vertices", "the boundary quads around a boundary vertex form one cycle", 0, {}};
+    CheckResult verts = named("boundary-vertices", "the boundary quads around a boundary vertex form one cycle");
     for (int v : b.non_manifold_vertices)
         add_violation(verts, max, at_points(mesh, "boundary vertex whose boundary quads are not one cycle", {v}));
+    faces.checked = 6 * h.mesh.hexes.size();
+    faces.checked_what = "hex faces";
+    edges.checked = orient.checked = b.boundary_edges;
+    edges.checked_what = orient.checked_what = "boundary edges";
+    verts.checked = b.boundary_vertices;
+    verts.checked_what = "boundary vertices";
     for (CheckResult* c : {&faces, &edges, &orient, &verts}) r.checks.push_back(std::move(*c));
     r.statistics["boundary_quads"] = b.quads.size();
     r.statistics["boundary_edges"] = b.boundary_edges;
@@ -103,7 +121,7 @@ void check_components(const MeshFile& mesh, const Hexes& h, std::size_t max, Aud
         auto [it, fresh] = size_and_first.try_emplace(find_root(parent, i), 0, i);
         ++it->second.first;
     }
-    CheckResult one{"connected", "one face-connected component of hexes", 0, {}};
+    CheckResult one = named("connected", "one face-connected component of hexes");
     std::vector<std::size_t> sizes;
     for (const auto& [root, sf] : size_and_first) sizes.push_back(sf.first);
     std::sort(sizes.rbegin(), sizes.rend());
@@ -113,13 +131,15 @@ void check_components(const MeshFile& mesh, const Hexes& h, std::size_t max, Aud
             add_violation(one, max, at_points(mesh, "component of " + std::to_string(sf.first) + " hexes, its first hex",
                                               {h.mesh.hexes[first].begin(), h.mesh.hexes[first].end()}, h.file_cell[first]));
         }
+    one.checked = h.mesh.hexes.size();
+    one.checked_what = "hexes";
     r.checks.push_back(std::move(one));
     r.statistics["hex_components"] = sizes;
 }
 
 void check_jacobians(const MeshFile& mesh, const Hexes& h, std::size_t max, AuditReport& r) {
     const std::vector<double> sj = geometry::scaled_jacobians(h.mesh);
-    CheckResult inverted{"not-inverted", "scaled Jacobian > 0 for every hex", 0, {}};
+    CheckResult inverted = named("not-inverted", "scaled Jacobian > 0 for every hex");
     static const double kEdges[] = {-1.0, 0.0, 0.2, 0.4, 0.6, 0.8, 1.0};
     static const char* kBins[] = {"[-1,0]", "(0,0.2)", "[0.2,0.4)", "[0.4,0.6)", "[0.6,0.8)", "[0.8,1]"};
     std::map<std::string, std::size_t> histogram;
@@ -137,6 +157,8 @@ void check_jacobians(const MeshFile& mesh, const Hexes& h, std::size_t max, Audi
         while (bin < 5 && sj[i] >= kEdges[bin + 1]) ++bin;
         ++histogram[kBins[bin]];
     }
+    inverted.checked = sj.size();
+    inverted.checked_what = "hexes";
     r.checks.push_back(std::move(inverted));
     r.statistics["scaled_jacobian_histogram"] = histogram;
     r.statistics["scaled_jacobian_min"] = min;

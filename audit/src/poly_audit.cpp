@@ -93,9 +93,19 @@ void audit_polyhedral(const MeshFile& mesh, const AuditOptions& options, AuditRe
     const MeshComplex m = build_complex(mesh);
     const ValidationReport report = validate(m.complex);
     std::map<VK, std::size_t> check_of;
+    const std::pair<std::size_t, const char*> checked[] = {
+        {report.checked_faces, "faces"},          {report.checked_cells, "cells"},
+        {report.checked_faces, "faces"},          {report.checked_vertices, "interior vertices"},
+        {report.checked_edges, "interior edges"}, {report.checked_vertices, "interior vertices"}};
     for (const CheckSpec& s : check_specs()) {
         for (VK kind : s.kinds) check_of[kind] = r.checks.size();
-        r.checks.push_back({s.name, s.description, 0, {}});
+        const auto& [n, what] = checked[r.checks.size()];
+        CheckResult c;
+        c.name = s.name;
+        c.description = s.description;
+        c.checked = n;
+        c.checked_what = what;
+        r.checks.push_back(std::move(c));
     }
     if (mesh.cells.empty())
         add_violation(r.checks[check_of.at(VK::CellNotSphere)], options.max_listed,

@@ -59,6 +59,8 @@ struct Violation {
 struct CheckResult {
     std::string name, description;
     std::size_t violations = 0;
+    std::size_t checked = 0;       ///< entities examined (cells, faces, interior vertices, ...)
+    std::string checked_what;      ///< what they are, e.g. "interior vertices"
     std::vector<Violation> first;  ///< the first max_listed
     [[nodiscard]] bool passed() const { return violations == 0; }
 };
