@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     register_certify(app);
     register_variants(app);
     register_mesh(app);
+    register_atlas(app);
 
     try {
         app.parse(argc, argv);  // subcommand callbacks run in here
