@@ -114,12 +114,12 @@ class TableReader(html.parser.HTMLParser):
         if self._cell is not None: self._cell += data
 
 
-def load_in_browser(chromium, page, work):
+def load_in_browser(chromium, page, work, fragment=""):
     """(console messages, dumped DOM, screenshot path) of one page."""
     shot = os.path.join(work, os.path.basename(page) + ".png")
     profile = tempfile.mkdtemp(prefix="profile-", dir=work)
     proc = subprocess.run([chromium, *CHROMIUM_FLAGS, "--user-data-dir=" + profile, "--screenshot=" + shot,
-                           "--dump-dom", "file://" + os.path.abspath(page)],
+                           "--dump-dom", "file://" + os.path.abspath(page) + ("#" + fragment if fragment else "")],
                           capture_output=True, text=True, timeout=120)
     console = [l for l in proc.stderr.splitlines() if ":CONSOLE" in l and not DRIVER_NOTICE.search(l)]
     return console, proc.stdout, shot
@@ -181,9 +181,13 @@ def main():
         if p["cells"] == 0 or p["dual_hexes"] == 0: fail(p["id"] + ": empty scene or dual")
 
     # A subset in the browser: one page of each kind and a few more, and the index.
-    subset = ["element-VC", "element-E-MR", kinds["transition"][0], kinds["weak"][0], "variant-edge-LU"]
-    for page_id in subset:
-        console, dom, shot = load_in_browser(chromium, os.path.join(site, page_id + ".html"), work)
+    # (page, URL fragment presetting the controls: every colour mode, the dual and the clip plane drawn)
+    subset = [("element-VC", ""), ("element-E-MR", "mode=size&dual=1"), (kinds["transition"][0], "dual=1&clip=1"),
+              (kinds["weak"][0], "mode=element"), ("variant-edge-LU", "mode=size&explode=0.6")]
+    shots = os.environ.get("DUALHEX_ATLAS_SCREENSHOTS")  # keep the screenshots there (README's)
+    for page_id, fragment in subset:
+        console, dom, shot = load_in_browser(chromium, os.path.join(site, page_id + ".html"), work, fragment)
+        if shots: shutil.copy(shot, os.path.join(shots, "atlas-" + page_id + ".png"))
         for line in console: fail(page_id + ": console: " + line)
         reader = TableReader()
         reader.feed(dom)

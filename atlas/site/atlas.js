@@ -53,6 +53,11 @@
   // Configurations open with the plain and fine hexes hidden: the elements are the point.
   const configuration = data.kind === "transition" || data.kind === "weak";
   const state = { explode: 0.35, mode: "role", cells: true, plain: !configuration, dual: false, clip: false, clipAt: 0.0 };
+  // The URL fragment may preset the controls, e.g. page.html#mode=size&dual=1&clip=1&clipAt=0.2
+  for (const [k, v] of new URLSearchParams(location.hash.slice(1))) {
+    if (!(k in state)) continue;
+    state[k] = typeof state[k] === "boolean" ? v === "1" : typeof state[k] === "number" ? parseFloat(v) : v;
+  }
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
   renderer.setSize(720, 540);
   renderer.setClearColor(BACKGROUND);
@@ -158,6 +163,7 @@
   }
   const modes = element("select", { "data-control": "mode" });
   for (const m of ["role", "size", "element"]) modes.appendChild(element("option", { value: m }, m === "size" ? "face size" : m));
+  modes.value = state.mode;
   const controls = element("div", { class: "controls" });
   controls.append(slider("explode", 0, 1.5), control("colour by", modes, (i) => { state.mode = i.value; }),
                   checkbox("cells"), checkbox("plain"), checkbox("dual"), checkbox("clip"), slider("clipAt", -1.2, 1.2));
