@@ -64,6 +64,14 @@ nlohmann::json face_size_table(const std::string& name, const std::map<int, std:
     return table("face_sizes", "Face sizes (paper's Table \"topology\" beside)", {"size", "faces", "paper"}, rows);
 }
 
+/// " (= the paper's row)", " (the paper: F3 .. != ..)" or "" without a row.
+std::string paper_note(const std::string& name, const std::map<int, std::size_t>& faces) {
+    const auto row = paper_row(name);
+    if (!row) return "";
+    const auto comparison = compare_with_paper(faces, *row);
+    return comparison.matches() ? " (= the paper's row)" : " (the paper: " + comparison.summary() + ")";
+}
+
 Page element_page(const Element& e) {
     const auto cells = element_cells(e);
     const auto faces = face_size_histogram(e.complex);
@@ -71,7 +79,9 @@ Page element_page(const Element& e) {
     nlohmann::json data = {
         {"id", element_page_id(e.name)}, {"kind", "element"}, {"title", "Element " + e.name},
         {"summary", std::string(e.valid() ? "valid" : "INVALID") + " subdivision of the leaf [0," +
-                        std::to_string(e.leaf()) + "]^3; the dual shown is the clipped dual (one hex per vertex)"},
+                        std::to_string(e.leaf()) + "]^3, " + std::to_string(e.complex.n_cells()) + " cells, faces " +
+                        format_histogram(faces) + paper_note(e.name, faces) +
+                        "; the dual shown is the clipped dual (one hex per vertex)"},
         {"scene", scene_json(e.complex, cells, DualKind::Clipped)},
         {"tables", nlohmann::json::array({counts_table(e.complex), face_size_table(e.name, faces),
                     table("dual_valences", "Clipped dual: interior dual edge valences", {"valence", "edges"},
