@@ -182,7 +182,7 @@ def main():
 
     # A subset in the browser: one page of each kind and a few more, and the index.
     # (page, URL fragment presetting the controls: every colour mode, the dual and the clip plane drawn)
-    subset = [("element-VC", ""), ("element-E-MR", "mode=size&dual=1"), (kinds["transition"][0], "dual=1&clip=1"),
+    subset = [("element-VC", ""), ("element-E-MR", "mode=size&dual=1"), (kinds["transition"][0], "dual=1&clip=1&clipAxis=z"),
               (kinds["weak"][0], "mode=element"), ("variant-edge-LU", "mode=size&explode=0.6")]
     shots = os.environ.get("DUALHEX_ATLAS_SCREENSHOTS")  # keep the screenshots there (README's)
     for page_id, fragment in subset:

@@ -52,7 +52,7 @@
   // ---- the view ----
   // Configurations open with the plain and fine hexes hidden: the elements are the point.
   const configuration = data.kind === "transition" || data.kind === "weak";
-  const state = { explode: 0.35, mode: "role", cells: true, plain: !configuration, dual: false, clip: false, clipAt: 0.0 };
+  const state = { explode: 0.35, mode: "role", cells: true, plain: !configuration, dual: false, clip: false, clipAxis: "x", clipAt: 0.0 };
   // The URL fragment may preset the controls, e.g. page.html#mode=size&dual=1&clip=1&clipAt=0.2
   for (const [k, v] of new URLSearchParams(location.hash.slice(1))) {
     if (!(k in state)) continue;
@@ -73,7 +73,8 @@
   const model = new THREE.Group();
   model.quaternion.setFromEuler(new THREE.Euler(-0.55, 0.75, 0));
   world3.add(model);
-  const clipPlane = new THREE.Plane(new THREE.Vector3(-1, 0, 0), 0);
+  // The materials clip by clipPlane (world space); it follows clipInModel (the model's frame).
+  const clipPlane = new THREE.Plane(), clipInModel = new THREE.Plane();
 
   function buildCells() {
     const pos = [], col = [], edges = [];
@@ -118,12 +119,16 @@
     }
     if (state.cells) for (const o of buildCells()) model.add(o);
     if (state.dual) model.add(buildDual());
-    clipPlane.constant = state.clipAt;
+    // keeps the side below clipAt along the axis of the model
+    clipInModel.normal.set(state.clipAxis === "x" ? -1 : 0, state.clipAxis === "y" ? -1 : 0, state.clipAxis === "z" ? -1 : 0);
+    clipInModel.constant = state.clipAt;
     render();
   }
   let zoom = 1;
   function render() {
     camera.position.z = 5.8 * (1 + state.explode) * zoom;  // the exploded model stays in view
+    model.updateMatrixWorld();
+    clipPlane.copy(clipInModel).applyMatrix4(model.matrixWorld);
     renderer.render(world3, camera);
   }
 
@@ -159,14 +164,18 @@
   }
   function slider(key, min, max) {
     const s = element("input", { type: "range", min: min, max: max, step: "0.01", value: state[key], "data-control": key });
-    return control(key === "clipAt" ? "clip x" : key, s, (i) => { state[key] = parseFloat(i.value); });
+    return control(key === "clipAt" ? "at" : key, s, (i) => { state[key] = parseFloat(i.value); });
   }
   const modes = element("select", { "data-control": "mode" });
   for (const m of ["role", "size", "element"]) modes.appendChild(element("option", { value: m }, m === "size" ? "face size" : m));
   modes.value = state.mode;
+  const axes = element("select", { "data-control": "clipAxis" });
+  for (const a of ["x", "y", "z"]) axes.appendChild(element("option", { value: a }, a));
+  axes.value = state.clipAxis;
   const controls = element("div", { class: "controls" });
   controls.append(slider("explode", 0, 1.5), control("colour by", modes, (i) => { state.mode = i.value; }),
-                  checkbox("cells"), checkbox("plain"), checkbox("dual"), checkbox("clip"), slider("clipAt", -1.2, 1.2));
+                  checkbox("cells"), checkbox("plain"), checkbox("dual"), checkbox("clip"),
+                  control("along", axes, (i) => { state.clipAxis = i.value; }), slider("clipAt", -1.2, 1.2));
   const legend = element("div", { class: "legend" });
   function fillLegend() {
     legend.innerHTML = "";
