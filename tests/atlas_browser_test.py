@@ -212,6 +212,15 @@ def main():
         f.write(text)
     if not any("deliberate" in l for l in load_in_browser(chromium, broken, work)[0]):
         fail("the console check did not see a deliberate error")
+    # ... and a canvas left at the background colour must count as blank.
+    blank = os.path.join(site, "blank.html")
+    with open(blank, "w") as f:
+        f.write('<html><body style="margin:0"><canvas id="c" width="720" height="540"></canvas><script>'
+                'const c = document.getElementById("c"), g = c.getContext("2d"); g.fillStyle = "#f7f7f2";'
+                'g.fillRect(0, 0, 720, 540); document.body.setAttribute("data-canvas", "0,0,720,540");'
+                '</script></body></html>')
+    _, dom, shot = load_in_browser(chromium, blank, work)
+    if foreground_fraction(shot, (0, 0, 720, 540)) >= 0.01: fail("the pixel check did not see a blank canvas")
 
     if failures:
         print("%d failure(s); output kept in %s" % (len(failures), work))
