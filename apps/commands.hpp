@@ -46,6 +46,7 @@ void register_certify(CLI::App& app);
 void register_variants(CLI::App& app);
 void register_mesh(CLI::App& app);
 void register_audit(CLI::App& app);
+void register_atlas(CLI::App& app);
 
 // --- shared helpers (commands.cpp) ---
 

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     register_variants(app);
     register_mesh(app);
     register_audit(app);
+    register_atlas(app);
 
     try {
         app.parse(argc, argv);  // subcommand callbacks run in here
