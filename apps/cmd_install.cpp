@@ -61,6 +61,15 @@ void run_install(const InstallOptionsCli& opt) {
     const double t_read = ms_since(t0);
 
     const auto library = load_default_element_library();
+    if (!opt.certify.empty()) {  // before the work: a certificate the checker would reject is no certificate
+        const std::int64_t needed = lattice_unit(*library) << grid.max_level();
+        if (needed > kCertificateMaxCoordinate)
+            throw UsageError("--certify: the grid's level " + std::to_string(grid.max_level()) +
+                             " needs lattice coordinates up to " + std::to_string(needed) +
+                             ", beyond the checker's bound " + std::to_string(kCertificateMaxCoordinate) +
+                             " (2^19); grids up to level " + std::to_string(max_certifiable_level(lattice_unit(*library))) +
+                             " can be certified");
+    }
     t0 = Clock::now();
     InstallResult installed;
     try {

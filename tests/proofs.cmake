@@ -12,7 +12,8 @@ dualhex_check_shipped(proofs_shipped_variant_certificates variants/manifest)
 dualhex_check_shipped(proofs_shipped_window_certificates windows/manifest)
 
 # Freshness (regenerate, compare with the manifest) and adversarial mutations.
-dualhex_add_test(test_proofs_certificates SOURCES test_proofs_certificates.cpp
+dualhex_add_test(test_proofs_certificates SOURCES test_proofs_certificates.cpp test_proofs_freshness.cpp
+  test_proofs_tampering.cpp
   DEPS dualhex::checkers dualhex::schemes dualhex::topology)
 target_compile_definitions(test_proofs_certificates PRIVATE
   DUALHEX_PROOF_CHECKER="$<TARGET_FILE:dualhex-proof-checker>")

@@ -221,3 +221,21 @@ TEST_F(InstallCli, MalformedLeafFileIsInputError) {
 }
 
 }  // namespace
+
+// A certificate of a level-16 grid would hold coordinates beyond the checker's 2^19 bound:
+// refused before any work, exit 2, nothing written.
+TEST_F(InstallCli, CertifyRefusesGridsBeyondTheCheckersBound) {
+    std::string text;  // the corner cell split down to level 16 (a complete leaf set)
+    for (int level = 1; level <= 16; ++level)
+        for (int c = level == 16 ? 0 : 1; c < 8; ++c)
+            text += std::to_string(level) + ' ' + std::to_string(c & 1) + ' ' + std::to_string((c >> 1) & 1) + ' ' +
+                    std::to_string((c >> 2) & 1) + '\n';
+    const fs::path grid = write("deep.leaves", text);
+    const fs::path cert = dir_ / "deep.cert";
+    const Result r = run({"install", grid.string(), "-o", (dir_ / "deep").string(), "--certify", cert.string()});
+    EXPECT_EQ(r.rc, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find("beyond the checker's bound"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(cert));
+    EXPECT_FALSE(fs::exists(dir_ / "deep.poly.vtk"));
+}
+

@@ -37,6 +37,17 @@
 
 namespace dualhex {
 
+/// The standalone checker accepts coordinates, box bounds and periods in [-2^19, 2^19] only
+/// (its overflow proof: proofs/README.md, "Bounds"); a producer must not write beyond.
+inline constexpr std::int64_t kCertificateMaxCoordinate = std::int64_t{1} << 19;
+/// The deepest grid level whose installation (box [0, unit << level]) can be certified.
+[[nodiscard]] constexpr int max_certifiable_level(std::int64_t unit) {
+    int level = 0;
+    while ((unit << (level + 1)) <= kCertificateMaxCoordinate) ++level;
+    return level;
+}
+
+
 class ElementLibrary;
 class TransitionRule;
 

@@ -1,0 +1,106 @@
+#pragma once
+// The mutation tests' view of a certificate: its text parsed into vertices, faces, cells
+// and claims (Cert), and written back (serialize), so mutations can edit one entity.
+#include <cstdint>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dualhex/topology/lattice.hpp"
+
+namespace dualhex {
+namespace {
+
+struct Cert {
+    std::vector<std::string> head;  // name/kind/domain lines (name is replaced)
+    std::vector<LatticePoint> pos;
+    std::vector<std::vector<int>> faces;
+    std::vector<std::vector<int>> cells;  // 2*f + side
+    bool interior_all = false;
+    std::vector<int> interior;
+    std::vector<std::string> claims;  // the text after "claim "
+    std::string domain;               // "box" / "torus"
+    std::int64_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, period = 0;
+};
+
+inline Cert parse(const std::string& text) {
+    Cert c;
+    std::istringstream in(text);
+    std::string line;
+    auto rows = [&](std::size_t n, auto&& f) {
+        for (std::size_t i = 0; i < n; ++i) {
+            std::getline(in, line);
+            f(line);
+        }
+    };
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream ls(line);
+        std::string key;
+        std::size_t n = 0;
+        ls >> key;
+        if (key == "name" || key == "kind") c.head.push_back(line);
+        if (key == "domain") {
+            c.head.push_back(line);
+            ls >> c.domain;
+            if (c.domain == "box") ls >> c.lo[0] >> c.lo[1] >> c.lo[2] >> c.hi[0] >> c.hi[1] >> c.hi[2];
+            else ls >> c.period;
+        }
+        if (key == "vertices") ls >> n, rows(n, [&](const std::string& l) {
+            std::istringstream s(l);
+            LatticePoint p;
+            s >> p.x >> p.y >> p.z;
+            c.pos.push_back(p);
+        });
+        if (key == "faces") ls >> n, rows(n, [&](const std::string& l) {
+            std::istringstream s(l);
+            std::vector<int> f;
+            for (int v; s >> v;) f.push_back(v);
+            c.faces.push_back(f);
+        });
+        if (key == "cells") ls >> n, rows(n, [&](const std::string& l) {
+            std::istringstream s(l);
+            std::vector<int> k;
+            for (std::string t; s >> t;) k.push_back(2 * std::stoi(t.substr(1)) + (t[0] == '-'));
+            c.cells.push_back(k);
+        });
+        if (key == "interior") {
+            std::string w;
+            ls >> w;
+            if (w == "all") c.interior_all = true;
+            else for (std::size_t i = 0, m = std::stoul(w); i < m; ++i) { int v; in >> v; c.interior.push_back(v); }
+        }
+        if (key == "claim") c.claims.push_back(line.substr(6));
+    }
+    return c;
+}
+
+inline std::string serialize(const Cert& c, const std::string& name) {
+    std::ostringstream o;
+    o << "dualhex-certificate 1\n";
+    for (const std::string& h : c.head) o << (h.rfind("name ", 0) == 0 ? "name " + name : h) << '\n';
+    o << "vertices " << c.pos.size() << '\n';
+    for (const auto& p : c.pos) o << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    o << "faces " << c.faces.size() << '\n';
+    for (const auto& f : c.faces) {
+        for (std::size_t i = 0; i < f.size(); ++i) o << (i ? " " : "") << f[i];
+        o << '\n';
+    }
+    o << "cells " << c.cells.size() << '\n';
+    for (const auto& k : c.cells) {
+        for (std::size_t i = 0; i < k.size(); ++i) o << (i ? " " : "") << (k[i] % 2 ? '-' : '+') << k[i] / 2;
+        o << '\n';
+    }
+    if (c.interior_all) o << "interior all\n";
+    else {
+        o << "interior " << c.interior.size() << '\n';
+        for (int v : c.interior) o << v << '\n';
+    }
+    for (const auto& cl : c.claims) o << "claim " << cl << '\n';
+    o << "end\n";
+    return o.str();
+}
+
+}  // namespace
+}  // namespace dualhex
