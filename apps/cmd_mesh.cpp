@@ -27,7 +27,7 @@ struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int smooth = 5;
     double feature_angle = 45.0;
-    double min_quality = 0.5, core_margin = 0.1, optimise_ms = 0, pad_ray_limit = 2.0;
+    double min_quality = 0.5, core_margin = 0.1, optimise_ms = 2000, pad_ray_limit = 2.0;
     bool json = false, force = false, accept_topology_change = false;
     MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
@@ -270,7 +270,7 @@ void register_mesh(CLI::App& app) {
     sub->add_option("--core-margin", opt->core_margin,
                     "Core hexes have all corners at least this times their mean edge inside the surface (default 0.1)")
         ->check(CLI::Range(0.0, 2.0));
-    sub->add_option("--optimise-ms", opt->optimise_ms, "CPU-time bound of the optimiser in ms, checked between sweeps (default 0: none, only the sweep bounds, so the mesh does not depend on the machine's load)")
+    sub->add_option("--optimise-ms", opt->optimise_ms, "CPU-time bound of the optimiser in ms, checked between sweeps (default 2000; 0: none, only the sweep bounds, so the mesh does not depend on the machine's load, but large meshes can take minutes)")
         ->check(CLI::Range(0.0, 1e7));
     sub->add_option("--pad-ray-limit", opt->pad_ray_limit,
                     "Pad: an outer vertex is the normal ray's hit if it is within this times (distance + edge), else "

@@ -186,8 +186,8 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
     const detail::VertexHexes incidence(mesh);
     detail::BarrierEnergy energy(mesh);
     const std::clock_t start = std::clock();
-    // No time limit (the default): the sweep bounds alone stop it, so the result does not
-    // depend on the machine's load. A limit makes it faster and load-dependent.
+    // No time limit (0, the default): the sweep bounds alone stop it, so the result does not
+    // depend on the machine's load. A limit bounds the time and makes it load-dependent.
     const auto budget = options.time_limit_ms > 0
                             ? static_cast<std::clock_t>(std::min(options.time_limit_ms, 1e9) * 1e-3 * CLOCKS_PER_SEC)
                             : std::numeric_limits<std::clock_t>::max() / 4;

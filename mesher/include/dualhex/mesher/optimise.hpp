@@ -43,7 +43,10 @@ struct OptimiseOptions {
     double min_quality = 0.5;   ///< target minimum scaled Jacobian
     int untangle_sweeps = 200;
     int quality_sweeps = 100;
-    double time_limit_ms = 0;  ///< process CPU time, checked between sweeps; 0: none (deterministic)
+    /// Process CPU time, checked between sweeps; 0 (the library's default): none, only the
+    /// sweep bounds stop it, so the result does not depend on the machine's load (large
+    /// meshes can take minutes). `dualhex mesh` bounds it (--optimise-ms, default 2000).
+    double time_limit_ms = 0;
 };
 
 struct OptimiseResult {
