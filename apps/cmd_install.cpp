@@ -36,18 +36,6 @@ struct InstallOptionsCli {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-// A cell is a plain hexahedron iff it has 6 faces, all quadrilaterals.
-std::size_t non_hex_cells(const CellComplex& k) {
-    std::size_t n = 0;
-    for (std::size_t c = 0; c < k.n_cells(); ++c) {
-        const auto hfs = k.cell_halffaces(CellHandle(c));
-        bool hex = hfs.size() == 6;
-        for (HalfFaceHandle h : hfs) hex = hex && k.face_vertices(h.face()).size() == 4;
-        n += hex ? 0 : 1;
-    }
-    return n;
-}
-
 void run_install(const InstallOptionsCli& opt) {
     const ThreadLimit limit(opt.threads);
     const std::string poly_path = opt.prefix + ".poly.vtk", hex_path = opt.prefix + ".hex.vtk";
@@ -129,7 +117,7 @@ void run_install(const InstallOptionsCli& opt) {
     }
     const double t_write = ms_since(t0);
 
-    const std::size_t non_hex = non_hex_cells(k);
+    const std::size_t non_hex = non_hex_cell_count(k);
     const auto elements = installed.elements_used();
     const auto face_sizes = face_size_histogram(k);
     if (opt.json) {

@@ -14,9 +14,6 @@
 // sum_cpu us_per_leaf peak_MB (bench/run_install.sh runs one grid per process).
 #include <sys/resource.h>
 
-#include <time.h>
-
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -26,6 +23,7 @@
 
 #include "dualhex/install.hpp"
 #include "flat_grid.hpp"
+#include "install_dual_run.hpp"
 #include "dualhex/install/library.hpp"
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
@@ -37,24 +35,15 @@ using namespace dualhex;
 
 namespace {
 
-double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+using bench::cpu_seconds;
+using bench::peak_rss_mb;
 
-double cpu() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
+double now() { return bench::wall_seconds(); }
 
 std::string fmt(double x) {
     char b[32];
     std::snprintf(b, sizeof b, "%.3f", x);
     return b;
-}
-
-double peak_mb() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 
 using bench::flat_grid;
@@ -68,7 +57,7 @@ long minor_faults() {
 void row(const char* what, double seconds, const std::string& extra = {}) {
     static long faults = 0;
     const long now_faults = minor_faults();
-    std::printf("  %-28s %8.3f s  peak %7.1f MB  faults %7ld  %s\n", what, seconds, peak_mb(), now_faults - faults,
+    std::printf("  %-28s %8.3f s  peak %7.1f MB  faults %7ld  %s\n", what, seconds, peak_rss_mb(), now_faults - faults,
                 extra.c_str());
     faults = now_faults;
 }
@@ -154,46 +143,39 @@ int main(int argc, char** argv) {
         const std::string name = file.string();
         const bool generated = name.rfind("flat:", 0) == 0;
         if (!generated && !std::filesystem::exists(file)) continue;
-        double t = now(), c = cpu();
+        double t = now(), c = cpu_seconds();
         const LeafGrid grid = generated ? flat_grid(std::atoi(name.c_str() + 5)) : read_leaf_file(file);
         std::printf("%s: %zu leaves (strong rule)\n", file.filename().c_str(), grid.size());
-        row("read", now() - t, "cpu " + fmt(cpu() - c));
+        row("read", now() - t, "cpu " + fmt(cpu_seconds() - c));
         if (std::getenv("INSTALL_BENCH_PHASES")) {
-            c = cpu();
+            c = cpu_seconds();
             const InstallCheck ok = check_installable(grid);
-            row("  phase: grid checks", cpu() - c, ok.ok ? "ok (cpu)" : ok.message);
-            c = cpu();
+            row("  phase: grid checks", cpu_seconds() - c, ok.ok ? "ok (cpu)" : ok.message);
+            c = cpu_seconds();
             const std::vector<LeafContext> contexts = leaf_contexts(grid, OutsideRoot::Coarse);
-            row("  phase: leaf contexts", cpu() - c, "(cpu)");
+            row("  phase: leaf contexts", cpu_seconds() - c, "(cpu)");
         }
-        t = now(), c = cpu();
-        InstallResult r;
+        bench::InstallDualRun run;
         try {
-            r = install(grid, strong, *library);
+            run = bench::run_install_dual(grid, strong, *library);
         } catch (const std::exception& e) {
             std::printf("  install refused: %.160s\n", e.what());
             continue;
         }
-        const double w_install = now() - t, c_install = cpu() - c;
-        row("install (incl. grid checks)", w_install,
-            "cpu " + fmt(c_install) + "; " + std::to_string(r.complex.n_cells()) + " cells, " +
+        const InstallResult& r = run.installed;
+        const bench::PhaseTime dual{run.incidence.wall + run.clip.wall, run.incidence.cpu + run.clip.cpu};
+        const bench::PhaseTime total = run.total();
+        row("install (incl. grid checks)", run.install.wall,
+            "cpu " + fmt(run.install.cpu) + "; " + std::to_string(r.complex.n_cells()) + " cells, " +
                 std::to_string(r.complex.n_vertices()) + " vertices");
-        t = now(), c = cpu();
-        const std::int64_t extent = r.unit << r.max_level;
-        const Incidence inc(r.complex);
-        const double w_inc = now() - t, c_inc = cpu() - c;
-        row("Incidence", w_inc, "cpu " + fmt(c_inc));
-        t = now(), c = cpu();
-        const ClippedDual dual = clipped_dual(r.complex, inc, {0, 0, 0}, {extent, extent, extent});
-        const double w_dual = now() - t + w_inc, c_dual = cpu() - c + c_inc;
-        row("clipped_dual", now() - t, "cpu " + fmt(cpu() - c) + "; " + std::to_string(dual.hexes.size()) + " hexes, " +
-                                           std::to_string(dual.errors.size()) + " non-cubes");
-        row("install + dual", w_install + w_dual,
-            "cpu " + fmt(c_install + c_dual) + "; " + fmt(1e6 * (c_install + c_dual) / static_cast<double>(grid.size())) +
-                " us/leaf (cpu)");
+        row("Incidence", run.incidence.wall, "cpu " + fmt(run.incidence.cpu));
+        row("clipped_dual", run.clip.wall, "cpu " + fmt(run.clip.cpu) + "; " + std::to_string(run.dual.hexes.size()) +
+                                               " hexes, " + std::to_string(run.dual.errors.size()) + " non-cubes");
+        const double us_per_leaf = 1e6 * total.cpu / static_cast<double>(grid.size());
+        row("install + dual", total.wall, "cpu " + fmt(total.cpu) + "; " + fmt(us_per_leaf) + " us/leaf (cpu)");
         std::printf("TABLE %s %zu %zu %zu %.3f %.3f %.3f %.3f %.1f\n", file.filename().c_str(), grid.size(),
-                    r.complex.n_cells(), dual.hexes.size(), c_install, c_dual, c_install + c_dual,
-                    1e6 * (c_install + c_dual) / static_cast<double>(grid.size()), peak_mb());
+                    r.complex.n_cells(), run.dual.hexes.size(), run.install.cpu, dual.cpu, total.cpu, us_per_leaf,
+                    peak_rss_mb());
         if (verify) {
             t = now();
             const InstallVerification v = verify_installation(r);

@@ -8,7 +8,6 @@
 // (times in ms, wall clock; read = surface + AABB tree; extract = the core stage;
 // proj_smooth = pad + smoothing + optimiser + check + report; write = the hex mesh as FILE, default a temporary .vtk
 // that is removed; hexes_per_s = clipped-dual hexes / (install + dual); peak = max RSS).
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -20,6 +19,7 @@
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/geometry/surface.hpp"
+#include "machine.hpp"
 
 using namespace dualhex;
 using namespace dualhex::geometry;
@@ -30,11 +30,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-double peak_mb() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return static_cast<double>(u.ru_maxrss) / 1024.0;
-}
+using bench::peak_rss_mb;
 
 }  // namespace
 
@@ -72,7 +68,7 @@ int main(int argc, char** argv) {
                     std::filesystem::path(model).stem().c_str(), options.max_depth,
                     options.balance == Balance::Weak ? "weak" : "strong", r.leaves, r.dual_hexes, r.mesh.hexes.size(),
                     read, m.octree, m.balance, m.pair, m.install, m.verify, m.dual, m.core, proj_smooth, m.write,
-                    total, 1000.0 * static_cast<double>(r.dual_hexes) / (m.install + m.dual), peak_mb());
+                    total, 1000.0 * static_cast<double>(r.dual_hexes) / (m.install + m.dual), peak_rss_mb());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "mesh_stage_bench: %s: %s\n", model.c_str(), e.what());
         return 1;

@@ -7,14 +7,10 @@
 # leaves, ~7 GB peak).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
-build="${BUILD_DIR:-$here/../build}"
-cmake -S "$here/.." -B "$build" -DCMAKE_BUILD_TYPE=Release -DDUALHEX_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" -j2 --target install_bench >/dev/null
-data="$here/../../shared/data/grids"
-if [ $# -eq 0 ]; then set -- "$data/sphere_strong_d5.leaves" "$data/sphere_strong_d6.leaves" "$data/sphere_strong_d7.leaves"; fi
-echo "machine: $(uname -n)"
-echo "cpu:     $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //') ($(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg))"
-echo "date:    $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+. "$here/common.sh"
+bench_build install_bench
+if [ $# -eq 0 ]; then set -- "$data/grids/sphere_strong_d5.leaves" "$data/grids/sphere_strong_d6.leaves" "$data/grids/sphere_strong_d7.leaves"; fi
+bench_header
 echo "times are process CPU seconds (one core); dual = Incidence + clipped_dual; peak = max RSS"
 printf '%-26s %9s %9s %9s %9s %9s %9s %9s %8s\n' grid leaves cells hexes install dual sum us/leaf peakMB
 for g in "$@"; do

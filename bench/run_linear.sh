@@ -11,15 +11,12 @@
 #   bench/run_linear.sh [BASE ...]        (default: 4 5 6 7; flat:7 needs ~8 GB, ~30 s a run)
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
-build="${BUILD_DIR:-$here/../build}"
+. "$here/common.sh"
 reps="${REPS:-3}"
-cmake -S "$here/.." -B "$build" -DCMAKE_BUILD_TYPE=Release -DDUALHEX_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" -j2 --target install_bench >/dev/null
+bench_build install_bench
 if [ $# -eq 0 ]; then set -- 4 5 6 7; fi
 keep="glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=68719476736"
-echo "machine: $(uname -n)"
-echo "cpu:     $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //') ($(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg))"
-echo "date:    $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+bench_header
 echo "install + dual (Incidence + clipped dual), process CPU time, median of $reps; peak = max RSS"
 median_run() {  # tunables base: "leaves us_per_leaf peak_MB", the run with the median us/leaf
   i=0

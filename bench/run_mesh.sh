@@ -9,14 +9,11 @@
 # weak / strong balance; proj = pad + smoothing + optimiser + topology check + quality report.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
-build="${BUILD_DIR:-$here/../build}"
-cmake -S "$here/.." -B "$build" -DCMAKE_BUILD_TYPE=Release -DDUALHEX_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" -j2 --target mesh_stage_bench >/dev/null
-surfaces="$here/../../shared/data/surfaces"
+. "$here/common.sh"
+bench_build mesh_stage_bench
+surfaces="$data/surfaces"
 if [ $# -eq 0 ]; then set -- 6 7 8; fi
-echo "machine: $(uname -n)"
-echo "cpu:     $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //') ($(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg))"
-echo "date:    $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+bench_header
 printf '%-15s %2s %7s %7s %7s %6s %5s %5s %6s %6s %6s %5s %6s %5s %6s %7s %6s\n' model d leaves hexW hexS \
   octree bal pair install verify dual extr proj write total kHex/s peakMB
 case_line() {  # model depth [--strong]: the TABLE line, or "FAILED reason"

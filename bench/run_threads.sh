@@ -9,15 +9,12 @@
 #   bench/run_threads.sh [GRID.leaves | flat:BASE ...]
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
-build="${BUILD_DIR:-$here/../build}"
+. "$here/common.sh"
 reps="${REPS:-5}"
 threads="${THREADS:-1,2}"
-cmake -S "$here/.." -B "$build" -DCMAKE_BUILD_TYPE=Release -DDUALHEX_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" -j2 --target thread_scaling >/dev/null
-data="$here/../../shared/data/grids"
-if [ $# -eq 0 ]; then set -- "$data/sphere_strong_d5.leaves" "$data/sphere_strong_d6.leaves" "$data/sphere_strong_d7.leaves"; fi
-echo "machine: $(uname -n), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "date:    $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+bench_build thread_scaling
+if [ $# -eq 0 ]; then set -- "$data/grids/sphere_strong_d5.leaves" "$data/grids/sphere_strong_d6.leaves" "$data/grids/sphere_strong_d7.leaves"; fi
+bench_header
 out=$(mktemp)
 for g in "$@"; do
   case "$g" in flat:*) args="--flat ${g#flat:}" ;; *) args="--grid $g" ;; esac

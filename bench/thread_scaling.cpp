@@ -11,10 +11,7 @@
 // results are tested in tests/test_install_threads.cpp; here it guards the figures).
 // A machine-readable line per (grid, threads): SCALING name threads leaves hexes
 // checks contexts install incidence dual total cpu speedup Mhex_per_s.
-#include <time.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -31,19 +28,14 @@
 #include "dualhex/schemes/signature_rule.hpp"
 #include "dualhex/topology/clipped_dual.hpp"
 #include "flat_grid.hpp"
+#include "install_dual_run.hpp"
 #include "machine.hpp"
 
 using namespace dualhex;
 
 namespace {
 
-double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-double cpu() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
+using bench::time_phase;
 
 constexpr int kPhases = 7;  // checks, contexts, install, incidence, dual, total (install + dual), cpu
 const char* const kNames[kPhases] = {"checks", "contexts", "install", "incidence", "dual", "total", "cpu"};
@@ -67,27 +59,16 @@ std::uint64_t digest(const CellComplex& k, const ClippedDual& d) {
 
 Sample run_once(const LeafGrid& grid, const ElementLibrary& library) {
     Sample s;
-    double t = now();
-    (void)check_installable(grid);
-    s.t[0] = now() - t;
-    t = now();
-    (void)leaf_contexts(grid);
-    s.t[1] = now() - t;
-    const double c1 = cpu();
-    t = now();
-    const InstallResult r = install(grid, StrongRule(), library);
-    s.t[2] = now() - t;
-    t = now();
-    const Incidence inc(r.complex);
-    s.t[3] = now() - t;
-    t = now();
-    const std::int64_t extent = r.unit << r.max_level;
-    const ClippedDual dual = clipped_dual(r.complex, inc, {0, 0, 0}, {extent, extent, extent});
-    s.t[4] = now() - t;
-    s.t[5] = s.t[2] + s.t[3] + s.t[4];
-    s.t[6] = cpu() - c1;  // process CPU of install + dual (all threads)
-    s.hexes = dual.hexes.size();
-    s.digest = digest(r.complex, dual);
+    s.t[0] = time_phase([&] { (void)check_installable(grid); }).wall;
+    s.t[1] = time_phase([&] { (void)leaf_contexts(grid); }).wall;
+    const bench::InstallDualRun run = bench::run_install_dual(grid, StrongRule(), library);
+    s.t[2] = run.install.wall;
+    s.t[3] = run.incidence.wall;
+    s.t[4] = run.clip.wall;
+    s.t[5] = run.total().wall;
+    s.t[6] = run.total().cpu;  // process CPU of install + dual (all threads)
+    s.hexes = run.dual.hexes.size();
+    s.digest = digest(run.installed.complex, run.dual);
     return s;
 }
 

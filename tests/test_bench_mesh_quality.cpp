@@ -6,7 +6,6 @@
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <sstream>
 
 #include "dualhex/geometry/hex_topology.hpp"
@@ -46,33 +45,25 @@ Row measure(const TempDir& dir, const HexMesh& mesh, const std::string& name) {
     return row;
 }
 
-HexMesh pick(const HexBlock& b, const std::function<bool(int, int, int)>& keep) {
-    std::vector<char> flags(b.mesh.hexes.size(), 0);
-    for (int k = 0; k < b.nz; ++k)
-        for (int j = 0; j < b.ny; ++j)
-            for (int i = 0; i < b.nx; ++i) flags[static_cast<std::size_t>(b.cell(i, j, k))] = keep(i, j, k);
-    return selected_mesh(b.mesh, flags);
-}
-
 }  // namespace
 
 TEST(BenchMeshQuality, HandCountedTopology) {
     const TempDir dir;
-    const Row edge = measure(dir, pick(hex_block(2, 2, 1), [](int i, int j, int) { return i == j; }), "edge");
+    const Row edge = measure(dir, picked_mesh(hex_block(2, 2, 1), [](int i, int j, int) { return i == j; }), "edge");
     EXPECT_EQ(edge.nm_edges, 1u);
     EXPECT_EQ(edge.nm_vertices, 2u);
     EXPECT_EQ(edge.components, 2u);
     EXPECT_EQ(edge.chi, "3/2");
     const Row vertex =
-        measure(dir, pick(hex_block(2, 2, 2), [](int i, int j, int k) { return i == j && j == k; }), "vertex");
+        measure(dir, picked_mesh(hex_block(2, 2, 2), [](int i, int j, int k) { return i == j && j == k; }), "vertex");
     EXPECT_EQ(vertex.nm_edges, 0u);
     EXPECT_EQ(vertex.nm_vertices, 1u);
     const Row ring =
-        measure(dir, pick(hex_block(3, 3, 2), [](int i, int j, int) { return !(i == 1 && j == 1); }), "ring");
+        measure(dir, picked_mesh(hex_block(3, 3, 2), [](int i, int j, int) { return !(i == 1 && j == 1); }), "ring");
     EXPECT_EQ(ring.nm_edges + ring.nm_vertices, 0u);
     EXPECT_EQ(ring.chi, "0/2");
     const Row hollow = measure(
-        dir, pick(hex_block(3, 3, 3), [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }), "hollow");
+        dir, picked_mesh(hex_block(3, 3, 3), [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }), "hollow");
     EXPECT_EQ(hollow.boundary_components, "2/1");
     EXPECT_EQ(hollow.chi, "4/2");
     HexMesh cube = hex_block(2, 2, 2, 0.5).mesh;

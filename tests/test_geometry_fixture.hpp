@@ -26,6 +26,19 @@ struct TempDir {
     [[nodiscard]] std::string file(const std::string& name) const { return (path / name).string(); }
 };
 
+/// The message read_surface(path) throws (the error must name `path`); a test failure and
+/// "" if the file is accepted.
+inline std::string error_of(const std::string& path) {
+    try {
+        (void)dualhex::geometry::read_surface(path);
+    } catch (const dualhex::geometry::SurfaceError& e) {
+        EXPECT_EQ(e.file(), path);
+        return e.what();
+    }
+    ADD_FAILURE() << path << " was accepted";
+    return {};
+}
+
 inline std::string write_text(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
     return path;

@@ -1,7 +1,7 @@
 #pragma once
 // Hand-made all-hex complexes for the topology, repair and distance tests: a uniform
 // block of nx x ny x nz unit hexes (VTK order, positive orientation) and the sub-mesh of
-// the selected cells with its vertices renumbered.
+// the selected cells (by flag or by a predicate on (i, j, k)) with its vertices renumbered.
 #include <array>
 #include <vector>
 
@@ -50,6 +50,16 @@ inline dualhex::geometry::HexMesh selected_mesh(const dualhex::geometry::HexMesh
         out.hexes.push_back(q);
     }
     return out;
+}
+
+/// The cells (i, j, k) of `b` for which keep(i, j, k) holds, as their own mesh.
+template <class Keep>
+dualhex::geometry::HexMesh picked_mesh(const HexBlock& b, Keep keep) {
+    std::vector<char> flags(b.mesh.hexes.size(), 0);
+    for (int k = 0; k < b.nz; ++k)
+        for (int j = 0; j < b.ny; ++j)
+            for (int i = 0; i < b.nx; ++i) flags[static_cast<std::size_t>(b.cell(i, j, k))] = keep(i, j, k) ? 1 : 0;
+    return selected_mesh(b.mesh, flags);
 }
 
 }  // namespace geometry_test

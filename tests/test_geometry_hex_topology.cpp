@@ -22,16 +22,6 @@ std::vector<std::int64_t> chis(const std::vector<SurfaceComponent>& cs) {
     return out;
 }
 
-// The cells of `b` for which keep(i, j, k) holds.
-template <class Keep>
-HexMesh pick(const HexBlock& b, Keep keep) {
-    std::vector<char> flags(b.mesh.hexes.size(), 0);
-    for (int k = 0; k < b.nz; ++k)
-        for (int j = 0; j < b.ny; ++j)
-            for (int i = 0; i < b.nx; ++i) flags[static_cast<std::size_t>(b.cell(i, j, k))] = keep(i, j, k);
-    return selected_mesh(b.mesh, flags);
-}
-
 }  // namespace
 
 TEST(HexTopology, FaceTableIsOutwardAndCoversEachEdgeTwice) {
@@ -69,24 +59,24 @@ TEST(HexTopology, SingleHexAndBlockAreSpheres) {
 
 TEST(HexTopology, SolidTorusHasChiZeroAndCavityTwoSpheres) {
     const HexBlock b = hex_block(3, 3, 2);
-    const auto ring = check_hex_topology(pick(b, [](int i, int j, int) { return !(i == 1 && j == 1); }));
+    const auto ring = check_hex_topology(picked_mesh(b, [](int i, int j, int) { return !(i == 1 && j == 1); }));
     EXPECT_TRUE(ring.valid()) << ring.summary();
     EXPECT_EQ(chis(ring.boundary_components), (std::vector<std::int64_t>{0}));
     const HexBlock c = hex_block(3, 3, 3);
-    const auto hollow = check_hex_topology(pick(c, [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }));
+    const auto hollow = check_hex_topology(picked_mesh(c, [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }));
     EXPECT_TRUE(hollow.valid()) << hollow.summary();
     EXPECT_EQ(hollow.hex_components, 1u);
     EXPECT_EQ(chis(hollow.boundary_components), (std::vector<std::int64_t>{2, 2}));
     // Two rings side by side: a genus-2 solid, chi -2.
     const HexBlock d = hex_block(5, 3, 1);
-    const auto two = check_hex_topology(pick(d, [](int i, int j, int) { return !(j == 1 && (i == 1 || i == 3)); }));
+    const auto two = check_hex_topology(picked_mesh(d, [](int i, int j, int) { return !(j == 1 && (i == 1 || i == 3)); }));
     EXPECT_TRUE(two.valid()) << two.summary();
     EXPECT_EQ(chis(two.boundary_components), (std::vector<std::int64_t>{-2}));
 }
 
 TEST(HexTopology, HexesTouchingAlongAnEdgeAreNonManifold) {
     const HexBlock b = hex_block(2, 2, 1);
-    const HexMesh m = pick(b, [](int i, int j, int) { return i == j; });
+    const HexMesh m = picked_mesh(b, [](int i, int j, int) { return i == j; });
     const auto t = check_hex_topology(m);
     EXPECT_FALSE(t.valid());
     ASSERT_EQ(t.non_manifold_edges, 1u) << t.summary();
@@ -108,14 +98,14 @@ TEST(HexTopology, HexesTouchingAlongAnEdgeAreNonManifold) {
 
 TEST(HexTopology, HexesTouchingAtAVertexAreNonManifoldWithManifoldEdges) {
     const HexBlock b = hex_block(2, 2, 2);
-    const auto t = check_hex_topology(pick(b, [](int i, int j, int k) { return i == j && j == k; }));
+    const auto t = check_hex_topology(picked_mesh(b, [](int i, int j, int k) { return i == j && j == k; }));
     EXPECT_EQ(t.non_manifold_edges, 0u) << t.summary();
     ASSERT_EQ(t.non_manifold_vertices, 1u) << t.summary();
     EXPECT_EQ(t.first_non_manifold_vertices[0].points[0], Eigen::Vector3d(1, 1, 1));
     EXPECT_EQ(t.boundary_components[0].euler(), 3);  // 15 - 24 + 12
     EXPECT_FALSE(t.valid());
     // The complement: the block without two diagonal cells; two cones meet at the centre.
-    const auto c = check_hex_topology(pick(b, [](int i, int j, int k) { return !(i == j && j == k); }));
+    const auto c = check_hex_topology(picked_mesh(b, [](int i, int j, int k) { return !(i == j && j == k); }));
     EXPECT_EQ(c.non_manifold_edges, 0u) << c.summary();
     EXPECT_EQ(c.non_manifold_vertices, 1u) << c.summary();
     EXPECT_EQ(c.hex_components, 1u);
@@ -183,7 +173,7 @@ TEST(SurfaceTopology, CubeTorusAndTwoCubes) {
 
 TEST(SurfaceTopology, ComparisonOfMeshAndSurface) {
     const HexBlock b = hex_block(3, 3, 2);
-    const auto ring = check_hex_topology(pick(b, [](int i, int j, int) { return !(i == 1 && j == 1); }));
+    const auto ring = check_hex_topology(picked_mesh(b, [](int i, int j, int) { return !(i == 1 && j == 1); }));
     const auto torus = surface_topology(dualhex::mesher::default_shape());
     const auto cube = surface_topology(unit_cube_surface());
     const auto same = compare_topology(ring.boundary_components, torus);
@@ -194,6 +184,6 @@ TEST(SurfaceTopology, ComparisonOfMeshAndSurface) {
     EXPECT_FALSE(differ.same);
     EXPECT_EQ(differ.describe(), "boundary chi {0} vs surface chi {2} (differ)");
     const auto hollow =
-        check_hex_topology(pick(hex_block(3, 3, 3), [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }));
+        check_hex_topology(picked_mesh(hex_block(3, 3, 3), [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); }));
     EXPECT_FALSE(compare_topology(hollow.boundary_components, cube).same);  // {2, 2} vs {2}
 }

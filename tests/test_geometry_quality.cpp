@@ -7,6 +7,7 @@
 
 #include "dualhex/geometry/quality.hpp"
 #include "test_geometry_fixture.hpp"
+#include "test_geometry_hex_block.hpp"
 
 using namespace dualhex::geometry;
 using namespace geometry_test;
@@ -19,19 +20,7 @@ std::array<Vector3d, 8> unit_hex(double lo = 0, double hi = 1) {
             Vector3d(lo, lo, hi), Vector3d(hi, lo, hi), Vector3d(hi, hi, hi), Vector3d(lo, hi, hi)};
 }
 
-HexMesh block(int n, double size) {  // n^3 hexes filling [0, size]^3
-    HexMesh m;
-    auto id = [&](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
-    for (int k = 0; k <= n; ++k)
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) m.points.emplace_back(i * size / n, j * size / n, k * size / n);
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                m.hexes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
-                                   id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
-    return m;
-}
+HexMesh block(int n, double size) { return hex_block(n, n, n, size / n).mesh; }  // n^3 hexes filling [0, size]^3
 
 TEST(ScaledJacobian, CubeIsOne) {
     EXPECT_NEAR(scaled_jacobian(unit_hex()), 1.0, 1e-15);

@@ -20,17 +20,6 @@ using namespace geometry_test;
 
 namespace {
 
-std::string error_of(const std::string& path) {
-    try {
-        (void)read_surface(path);
-    } catch (const SurfaceError& e) {
-        EXPECT_EQ(e.file(), path);
-        return e.what();
-    }
-    ADD_FAILURE() << path << " was accepted";
-    return {};
-}
-
 void expect_error(const std::string& path, const std::string& part) {
     const std::string msg = error_of(path);
     EXPECT_NE(msg.find(part), std::string::npos) << "message: " << msg << "\nexpected to contain: " << part;

@@ -66,17 +66,6 @@ INSTANTIATE_TEST_SUITE_P(Data, SharedSurfaces, ::testing::ValuesIn(kSurfaces),
                              return n;
                          });
 
-std::string error_of(const std::string& path) {
-    try {
-        (void)read_surface(path);
-    } catch (const SurfaceError& e) {
-        EXPECT_EQ(e.file(), path);
-        return e.what();
-    }
-    ADD_FAILURE() << path << " was accepted";
-    return {};
-}
-
 TEST(SurfaceRead, OpenCubeRefusedWithBoundaryEdges) {
     TempDir dir;
     const auto path = write_text(dir.file("open_cube.off"), off_text(unit_cube_surface(), 5));

@@ -78,6 +78,7 @@ TEST(TopologyBuilder, DedupesFacesInBothOrientations) {
     ASSERT_EQ(loop.size(), 4u);
     for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(loop[i], fwd[(4 - i) % 4]);
     EXPECT_EQ(k.n_edges(), 6u);  // 4 sides + 2 diagonals from the second face
+    EXPECT_EQ(non_hex_cell_count(k), 1u);  // a cell of one quadrilateral is no hexahedron
 }
 
 TEST(TopologyBuilder, RejectsUnknownHandles) {
@@ -124,6 +125,7 @@ TEST(TopologyComplex, SingleCube) {
     EXPECT_EQ(r.checked_vertices, 0u);
     EXPECT_EQ(euler_characteristic(k), 1);
     EXPECT_EQ(face_size_histogram(k), (std::map<int, std::size_t>{{4, 6}}));
+    EXPECT_EQ(non_hex_cell_count(k), 0u);
     const Incidence inc(k);
     for (std::size_t f = 0; f < 6; ++f) EXPECT_TRUE(inc.is_boundary(FaceHandle(f)));
     EXPECT_EQ(count_dual(k).interior_vertices, 0u);

@@ -37,17 +37,6 @@ OutsideRoot parse_outside(const std::string& s) {
     throw std::invalid_argument("outside_root must be 'coarse' or 'mirror', got '" + s + "'");
 }
 
-std::size_t non_hex_cells(const CellComplex& k) {
-    std::size_t n = 0;
-    for (std::size_t c = 0; c < k.n_cells(); ++c) {
-        const auto hfs = k.cell_halffaces(CellHandle(c));
-        bool hex = hfs.size() == 6;
-        for (HalfFaceHandle h : hfs) hex = hex && k.face_vertices(h.face()).size() == 4;
-        n += hex ? 0 : 1;
-    }
-    return n;
-}
-
 // A hex is dual to a primal vertex; its level is that of the finest leaf among the cells
 // around the vertex (the hex's corners that are cell centres).
 std::vector<std::int64_t> hex_levels(const InstallResult& installed, const LeafGrid& grid, const ClippedDual& dual) {
@@ -120,7 +109,7 @@ py::dict report(const Installed& r, const std::string& source, const std::string
     d["max_level"] = r.grid.max_level();
     d["cells"] = k.n_cells();
     d["vertices"] = k.n_vertices();
-    d["non_hex_cells"] = non_hex_cells(k);
+    d["non_hex_cells"] = non_hex_cell_count(k);
     d["hexes"] = r.dual.hexes.size();
     d["dual_points"] = r.dual.points.size();
     d["non_cube_dual_cells"] = r.dual.errors.size();

@@ -24,6 +24,18 @@ std::map<int, std::size_t> interior_dual_edge_valence_histogram(const CellComple
     return interior_dual_edge_valence_histogram(k, Incidence(k));
 }
 
+// A cell is a plain hexahedron iff it has 6 faces, all quadrilaterals.
+std::size_t non_hex_cell_count(const CellComplex& k) {
+    std::size_t n = 0;
+    for (std::size_t c = 0; c < k.n_cells(); ++c) {
+        const auto hfs = k.cell_halffaces(CellHandle(c));
+        bool hex = hfs.size() == 6;
+        for (HalfFaceHandle h : hfs) hex = hex && k.face_vertices(h.face()).size() == 4;
+        n += hex ? 0 : 1;
+    }
+    return n;
+}
+
 std::int64_t euler_characteristic(const CellComplex& k) {
     return static_cast<std::int64_t>(k.n_vertices()) - static_cast<std::int64_t>(k.n_edges()) +
            static_cast<std::int64_t>(k.n_faces()) - static_cast<std::int64_t>(k.n_cells());

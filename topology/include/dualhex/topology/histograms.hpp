@@ -16,6 +16,9 @@ namespace dualhex {
                                                                               const Incidence& incidence);
 [[nodiscard]] std::map<int, std::size_t> interior_dual_edge_valence_histogram(const CellComplex& complex);
 
+/// Number of cells that are not plain hexahedra (6 faces, all quadrilaterals).
+[[nodiscard]] std::size_t non_hex_cell_count(const CellComplex& complex);
+
 /// V - E + F - C (1 for a ball).
 [[nodiscard]] std::int64_t euler_characteristic(const CellComplex& complex);
 
