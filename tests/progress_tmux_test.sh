@@ -22,7 +22,7 @@ fail() { echo "FAIL: $*"; echo "--- last screen:"; cat "$scratch/screen" 2>/dev/
 # and in $scratch/seen every screen that showed a bar. Timeout 600 s (the sanitizer build).
 run_in_terminal() {
     : >"$scratch/seen"
-    tmux -L "$socket" new-session -d -s t -x 120 -y 30 "$1; echo DONE=\$?; sleep 600"
+    tmux -L "$socket" -f /dev/null new-session -d -s t -x 120 -y 30 "$1; echo DONE=\$?; sleep 600"
     local i
     for ((i = 0; i < 12000; ++i)); do
         tmux -L "$socket" capture-pane -p -t t >"$scratch/screen"
