@@ -22,7 +22,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The stages in run order: progress reports stage i as i of their number done.
+// The stages in run order: progress reports stage i as i of their number done (a stage
+// missing here reports all done: add new stages to the list).
 constexpr std::array<std::string_view, 13> kStages{"octree", "balance", "pair",     "install",  "verify", "dual",  "core",
                                                    "pad",    "features", "smooth", "optimise", "check",  "report"};
 
