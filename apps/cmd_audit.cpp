@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "progress_bar.hpp"
 
 #include "dualhex/audit/audit.hpp"
 #include "dualhex/audit/certify.hpp"
@@ -20,7 +21,7 @@ namespace {
 struct AuditOptionsCli {
     std::string input, mode = "auto", certify;
     std::size_t max_listed = 10;
-    bool json = false, force = false;
+    bool json = false, force = false, no_progress = false;
 };
 
 // The certificate of an audited mesh: polyhedral -> `installation` on its bounding box
@@ -53,13 +54,21 @@ std::string write_audit_certificate(const AuditOptionsCli& opt, const audit::Mes
 
 void run_audit(const AuditOptionsCli& opt) {
     if (!opt.certify.empty()) check_output(opt.certify, opt.force);
+    // The bar: reading (size unknown until read), then the audit's own steps.
+    ProgressBar bar = ProgressBar::for_stderr(opt.json, opt.no_progress);
+    bar.update("audit: read", 0, 0);
     const audit::MeshFile mesh = audit::read_mesh(opt.input);  // InputError -> exit 3
     audit::AuditOptions options;
+    if (bar.active())
+        options.progress = [&bar](std::string_view stage, std::size_t done, std::size_t total) {
+            bar.update("audit: " + std::string(stage), done, total);
+        };
     options.max_listed = opt.max_listed;
     options.mode = opt.mode == "hex" ? audit::AuditMode::Hex
                    : opt.mode == "polyhedral" ? audit::AuditMode::Polyhedral
                                               : audit::AuditMode::Auto;
     const audit::AuditReport report = audit::audit_mesh(mesh, options);
+    bar.finish("audit: " + with_commas(report.cells) + " cells, " + (report.ok() ? "every check passed" : "a check FAILED"));
     const std::string refusal = opt.certify.empty() ? "" : write_audit_certificate(opt, mesh, report);
     if (opt.json) {
         nlohmann::json j = report.json();
@@ -96,6 +105,7 @@ void register_audit(CLI::App& app) {
                     "it with dualhex-proof-checker --file FILE)");
     sub->add_flag("--force", opt->force, "Overwrite the certificate file if it exists");
     add_json_flag(*sub, opt->json);
+    add_no_progress_flag(*sub, opt->no_progress);
     sub->callback([opt] { run_audit(*opt); });
 }
 

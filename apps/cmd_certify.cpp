@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "progress_bar.hpp"
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/schemes/element_library.hpp"
 
@@ -18,13 +19,14 @@ void register_certify(CLI::App& app) {
                                    "crossing variants) for the independent checker dualhex-proof-checker");
     struct Options {
         std::string out, elements;
-        bool force = false, json = false;
+        bool force = false, json = false, no_progress = false;
     };
     auto opt = std::make_shared<Options>();
     sub->add_option("--out", opt->out, "Directory to write the certificates and the manifest into")->required();
     sub->add_option("--elements", opt->elements, "Element directory (default: the element library's default)");
     sub->add_flag("--force", opt->force, "Write into DIR even if it is not empty (overwriting certificates and manifests in it)");
     add_json_flag(*sub, opt->json);
+    add_no_progress_flag(*sub, opt->no_progress);
     sub->callback([opt] {
         const std::filesystem::path dir = opt->out;
         // Before any work: nothing in DIR may be overwritten without --force (the files it
@@ -32,7 +34,9 @@ void register_certify(CLI::App& app) {
         check_output_directory(dir, opt->force);
         const ElementLibrary library =
             opt->elements.empty() ? ElementLibrary::load_default() : ElementLibrary::load(opt->elements);
-        const CertifyResult result = certify_library(library, dir);
+        ProgressBar bar = ProgressBar::for_stderr(opt->json, opt->no_progress);
+        const CertifyResult result = certify_library(library, dir, bar.callback());
+        bar.finish("certify: " + with_commas(result.certificates()) + " certificates written to " + dir.string());
         if (opt->json) {
             nlohmann::json sets = nlohmann::json::array();
             for (const CertificateSet& set : result.sets) {

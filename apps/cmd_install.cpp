@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "histogram_format.hpp"
+#include "progress_bar.hpp"
 #include "threads_option.hpp"
 
 #include "dualhex/checkers/certificate.hpp"
@@ -29,7 +30,7 @@ namespace {
 
 struct InstallOptionsCli {
     std::string input, prefix, outside = "coarse", balance = "weak", certify;
-    bool json = false, force = false;
+    bool json = false, force = false, no_progress = false;
     int threads = 0;  // 0: every core
 };
 
@@ -43,7 +44,14 @@ void run_install(const InstallOptionsCli& opt) {
     check_output(hex_path, opt.force);
     if (!opt.certify.empty()) check_output(opt.certify, opt.force);
     const OutsideRoot outside = opt.outside == "mirror" ? OutsideRoot::Mirror : OutsideRoot::Coarse;
+    // Steps: read, install, dual, the verification's own steps, write.
+    ProgressBar bar = ProgressBar::for_stderr(opt.json, opt.no_progress);
+    constexpr std::size_t kSteps = 4 + kVerifySteps;
+    const auto step = [&bar](const std::string& name, std::size_t done) {
+        bar.update("install " + std::to_string(done + 1) + "/" + std::to_string(kSteps) + ": " + name, done, kSteps);
+    };
 
+    step("read", 0);
     auto t0 = Clock::now();
     const LeafGrid grid = read_leaf_file(opt.input);  // InputError -> exit 3
     const double t_read = ms_since(t0);
@@ -58,6 +66,7 @@ void run_install(const InstallOptionsCli& opt) {
                              " (2^19); grids up to level " + std::to_string(max_certifiable_level(lattice_unit(*library))) +
                              " can be certified");
     }
+    step("install", 1);
     t0 = Clock::now();
     InstallResult installed;
     try {
@@ -68,12 +77,14 @@ void run_install(const InstallOptionsCli& opt) {
                         ? install(grid, StrongRule(), *library, {.outside_root = outside, .balance = balance})
                         : install(grid, WeakRule(), *library, {.outside_root = outside, .balance = balance});
     } catch (const InstallError& e) {  // not paired / not balanced as required: bad input
+        bar.clear();
         std::cerr << "error: " << opt.input << ": " << e.what() << '\n';
         throw Exit{kInputError};
     }
     const double t_install = ms_since(t0);
     const CellComplex& k = installed.complex;
 
+    step("dual", 2);
     t0 = Clock::now();
     const std::int64_t extent = installed.unit << installed.max_level;
     const ClippedDual dual = [&] {
@@ -83,11 +94,15 @@ void run_install(const InstallOptionsCli& opt) {
     const double t_dual = ms_since(t0);
 
     t0 = Clock::now();
-    const InstallVerification verification = verify_installation(installed);
+    const InstallVerification verification =
+        verify_installation(installed, [&](std::string_view stage, std::size_t done, std::size_t) {
+            step("verify: " + std::string(stage), 3 + done);
+        });
     const auto valences = clipped_dual_edge_valences(dual);
     const double t_verify = ms_since(t0);
     const bool ok = verification.ok() && dual.all_cubes();
 
+    step("write", kSteps - 1);
     t0 = Clock::now();
     const double scale = 1.0 / static_cast<double>(extent);
     geometry::write_complex_vtk(poly_path, k, geometry::LatticeEmbedding{Eigen::Vector3d::Zero(), scale}, true);
@@ -117,6 +132,8 @@ void run_install(const InstallOptionsCli& opt) {
     }
     const double t_write = ms_since(t0);
 
+    bar.finish("install: " + with_commas(k.n_cells()) + " cells, " + with_commas(dual.hexes.size()) + " dual hexes, " +
+               (ok ? "verified" : "FAILED"));
     const std::size_t non_hex = non_hex_cell_count(k);
     const auto elements = installed.elements_used();
     const auto face_sizes = face_size_histogram(k);
@@ -181,6 +198,7 @@ void register_install(CLI::App& app) {
     sub->add_option("--outside-root", opt->outside, "Octant cubes outside the root: coarse (default) or mirror")
         ->check(CLI::IsMember({"coarse", "mirror"}));
     add_json_flag(*sub, opt->json);
+    add_no_progress_flag(*sub, opt->no_progress);
     sub->callback([opt] { run_install(*opt); });
 }
 

@@ -5,8 +5,6 @@
 // check (mesher/mesh_pipeline.hpp). Writes OUT by extension (.vtk, .vtu, .mesh) and
 // reports quality, topology and times. Exit 1 if the boundary's topology differs from the
 // input's (the mesh is still written, to look at), unless --accept-topology-change.
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -15,6 +13,7 @@
 #include "commands.hpp"
 #include "histogram_format.hpp"
 #include "mesh_size_cli.hpp"
+#include "progress_bar.hpp"
 
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
@@ -28,7 +27,7 @@ struct MeshOptionsCli {
     int smooth = 5;
     double feature_angle = 45.0;
     double min_quality = 0.5, core_margin = 0.1, optimise_ms = 2000, pad_ray_limit = 2.0;
-    bool json = false, force = false, accept_topology_change = false;
+    bool json = false, force = false, accept_topology_change = false, no_progress = false;
     MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
 
@@ -40,7 +39,7 @@ void run_mesh(const MeshOptionsCli& opt) {
             throw UsageError("output '" + opt.output + "': unknown format (use .vtk, .vtu or .mesh)");
         check_output(opt.output, opt.force);
     }
-    const bool progress = !opt.json && isatty(STDERR_FILENO);
+    ProgressBar bar = ProgressBar::for_stderr(opt.json, opt.no_progress);
     const std::string input_name = opt.input.empty() ? "<default torus>" : opt.input;
 
     geometry::TriangleSurface surface;
@@ -65,22 +64,34 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.core.margin = opt.core_margin;
     options.optimise.time_limit_ms = opt.optimise_ms;
     options.pad.ray_limit = opt.pad_ray_limit;
-    if (progress) options.progress = [](const std::string& s) { std::cerr << "  " << s << "...\n"; };
+    // The pipeline's stages, then writing the file: "[mesh 11/14: optimise] 71% ...".
+    std::size_t steps = 1;  // the pipeline's stages and writing the file
+    const auto step = [&bar, &steps](std::string_view stage, std::size_t done) {
+        bar.update("mesh " + std::to_string(done + 1) + "/" + std::to_string(steps) + ": " + std::string(stage), done, steps);
+    };
+    if (bar.active())
+        options.progress = [&](std::string_view stage, std::size_t done, std::size_t total) {
+            steps = total + 1;
+            step(stage, done);
+        };
     warn_if_capped(size, tree);
     mesher::MeshPipelineResult r;
     try {
         r = mesher::mesh_surface(tree, options);
     } catch (const mesher::EmptyCoreError& e) {
+        bar.clear();
         std::cerr << "error: " << input_name << ": " << e.what() << '\n';
         throw Exit{kInputError};
     } catch (const geometry::OctreeTooLarge& e) {
         throw UsageError(std::string(e.what()) + " (a coarser --size or --size-rel, or raise --max-leaves)");
     }
 
-    if (progress) std::cerr << "  write...\n";
+    step("write", steps - 1);
     const auto t0 = std::chrono::steady_clock::now();
     geometry::write_hex_mesh(opt.output, r.mesh, opt.force, r.cell_data);
     r.ms.write = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    bar.finish("mesh: " + with_commas(r.mesh.hexes.size()) + " hexes written to " +
+               std::filesystem::path(opt.output).filename().string());
 
     const auto& q = r.quality;
     const auto& t = r.topology;
@@ -279,6 +290,7 @@ void register_mesh(CLI::App& app) {
     sub->add_flag("--accept-topology-change", opt->accept_topology_change,
                   "Exit 0 even if the boundary's components or Euler characteristics differ from the input's");
     add_json_flag(*sub, opt->json);
+    add_no_progress_flag(*sub, opt->no_progress);
     sub->callback([opt] { run_mesh(*opt); });
 }
 

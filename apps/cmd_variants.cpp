@@ -4,6 +4,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "progress_bar.hpp"
 #include "variants_json.hpp"
 
 namespace dualhex::app {
@@ -92,17 +93,25 @@ void register_variants(CLI::App& app) {
     struct Options {
         bool json = false;
         bool combined = false;
+        bool no_progress = false;
         std::size_t max_free = 12;
     };
     auto opt = std::make_shared<Options>();
     add_json_flag(*sub, opt->json);
+    add_no_progress_flag(*sub, opt->no_progress);
     sub->add_flag("--combined", opt->combined,
                   "Also enumerate every assignment of the crossings touched by a bend in each of the 20 "
                   "transition classes (slow: minutes)");
     sub->add_option("--max-free", opt->max_free, "With --combined: skip classes with more free crossings (default 12)")
         ->check(CLI::Range(0, 24));
     sub->callback([opt] {
-        const auto report = variants::check_variants(opt->combined, opt->max_free);
+        ProgressBar bar = ProgressBar::for_stderr(opt->json, opt->no_progress);
+        const auto report = variants::check_variants(opt->combined, opt->max_free, bar.callback());
+        std::size_t assignments = 0;
+        if (report.combined)
+            for (const auto& c : report.combined->classes) assignments += c.assignments;
+        bar.finish("variants: " + std::string(report.ok() ? "ok" : "FAILED") +
+                   (report.combined ? ", " + with_commas(assignments) + " combined assignments ranked" : std::string()));
         if (opt->json)
             print_json(variants_json(report));
         else

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "progress_bar.hpp"
 #include "dualhex/checkers/certificate.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "threads_option.hpp"
@@ -19,6 +20,7 @@ struct VerifyOptions {
     bool json = false;
     bool list = false;
     bool force = false;
+    bool no_progress = false;
     int threads = 0;  ///< 0: every core
     std::string certify;  ///< directory for certificates ("" = none)
     std::vector<std::string> only;
@@ -56,12 +58,18 @@ void run_verify(const VerifyOptions& opt) {
 
     if (!opt.certify.empty()) check_output_directory(opt.certify, opt.force);  // as dualhex certify
     const auto t_all = std::chrono::steady_clock::now();
+    // The bar counts the checks run of those selected; the table rows print over it.
+    ProgressBar bar = ProgressBar::for_stderr(opt.json, opt.no_progress);
+    const auto n_selected = static_cast<std::size_t>(std::count_if(
+        registry.checks().begin(), registry.checks().end(), [&](const Check& c) { return selected(c.name, opt.only); }));
+    std::size_t n_run = 0;
     nlohmann::json checks = nlohmann::json::array();
     int passed = 0, failed = 0, skipped = 0;
     // Summary blocks "strong" and "weak" from the scheme checks' details.
     nlohmann::json blocks = {{"strong", nlohmann::json::object()}, {"weak", nlohmann::json::object()}};
     for (const auto& c : registry.checks()) {
         if (!selected(c.name, opt.only)) continue;
+        bar.update(c.name, n_run++, n_selected);
         const auto t0 = std::chrono::steady_clock::now();
         CheckOutcome out;
         try {
@@ -95,12 +103,14 @@ void run_verify(const VerifyOptions& opt) {
                           {"seconds", dt},
                           {"details", out.details}});
         if (!opt.json) {
+            bar.clear();
             std::printf("%-4s  %-28s %8.3f s  %s\n", to_string(out.status), c.name.c_str(), dt, out.summary.c_str());
             if (!out.report.empty()) std::fputs(out.report.c_str(), stdout);
             std::fflush(stdout);
         }
     }
     const double total = seconds_since(t_all);
+    bar.clear();
     const bool ok = failed == 0;
     if (opt.json) {
         print_json({{"ok", ok},
@@ -119,7 +129,9 @@ void run_verify(const VerifyOptions& opt) {
     if (!opt.certify.empty()) {
         // The checks passed: write what they established as certificates (elements, the strong
         // and weak configurations, the crossing variants) for the independent checker.
-        const CertifyResult result = certify_library(ElementLibrary::load_default(), std::filesystem::path(opt.certify));
+        const CertifyResult result =
+            certify_library(ElementLibrary::load_default(), std::filesystem::path(opt.certify), bar.callback());
+        bar.clear();
         if (!opt.json)
             std::printf("certified: %zu certificates in %s (dualhex-proof-checker on %s/manifest, weak/manifest, "
                         "variants/manifest)\n",
@@ -139,6 +151,7 @@ void register_verify(CLI::App& app) {
                     "After a passing run, write certificates (as `dualhex certify`) into DIR, DIR/weak, DIR/variants");
     sub->add_flag("--force", opt->force, "With --certify: write into DIR even if it is not empty");
     add_threads_option(*sub, opt->threads);
+    add_no_progress_flag(*sub, opt->no_progress);
     sub->callback([opt] { run_verify(*opt); });
 }
 

@@ -201,12 +201,19 @@ void boundary_components(const Hexes& h, AuditReport& r) {
 
 void audit_hex(const MeshFile& mesh, const AuditOptions& options, AuditReport& r) {
     r.mode = "hex";
+    const auto step = [&](const char* name, std::size_t done) { report_progress(options.progress, name, done, 6); };
+    step("cells", 0);
     const Hexes h = check_cells(mesh, options.max_listed, r);
     r.statistics["hexes"] = h.mesh.hexes.size();
+    step("boundary", 1);
     check_boundary(mesh, h, options.max_listed, r);
+    step("components", 2);
     check_components(mesh, h, options.max_listed, r);
+    step("scaled Jacobians", 3);
     check_jacobians(mesh, h, options.max_listed, r);
+    step("edge valences", 4);
     edge_valences(h, r);
+    step("boundary components", 5);
     boundary_components(h, r);
     r.notes.push_back("topology from point ids only; the scaled Jacobian is the one floating-point check");
 }

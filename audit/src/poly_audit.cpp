@@ -90,7 +90,9 @@ void statistics(const MeshFile& mesh, const MeshComplex& m, const ValidationRepo
 
 void audit_polyhedral(const MeshFile& mesh, const AuditOptions& options, AuditReport& r) {
     r.mode = "polyhedral";
+    report_progress(options.progress, "complex", 0, 3);
     const MeshComplex m = build_complex(mesh);
+    report_progress(options.progress, "validate", 1, 3);
     const ValidationReport report = validate(m.complex);
     std::map<VK, std::size_t> check_of;
     const std::pair<std::size_t, const char*> checked[] = {
@@ -115,6 +117,7 @@ void audit_polyhedral(const MeshFile& mesh, const AuditOptions& options, AuditRe
         ++c.violations;
         if (c.first.size() < options.max_listed) c.first.push_back(locate(mesh, m, v));
     }
+    report_progress(options.progress, "statistics", 2, 3);
     statistics(mesh, m, report, r);
     r.notes.push_back("topology from point ids only (faces welded by their cyclic sequence of ids); coordinates unused");
     r.notes.push_back("face loops taken as written: outward by the right-hand rule");

@@ -186,12 +186,13 @@ std::size_t CertifyResult::bytes() const {
     return n;
 }
 
-CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir) {
+CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir, const Progress& progress) {
     CertifyResult result;
-    result.sets.push_back(certify_strong(library, StrongRule{}, dir));
-    result.sets.push_back(certify_weak(library, WeakRule{}, dir / "weak"));
+    result.sets.push_back(certify_strong(library, StrongRule{}, dir, progress));
+    result.sets.push_back(certify_weak(library, WeakRule{}, dir / "weak", progress));
+    report_progress(progress, "variants", 0, 1);
     result.sets.push_back(certify_variants(library, dir / "variants"));
-    result.sets.push_back(certify_windows(StrongRule{}, library, dir / "windows"));
+    result.sets.push_back(certify_windows(StrongRule{}, library, dir / "windows", 100, progress));
     return result;
 }
 

@@ -47,7 +47,8 @@ std::string torus_certificate(const TorusClass& c, const TransitionRule& rule, c
 
 }  // namespace
 
-CertificateSet certify_strong(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir) {
+CertificateSet certify_strong(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir,
+                              const Progress& progress) {
     CertificateSet set(dir, 256);
     set.add("elements.cert", element_certificates(library), library.elements().size(), CertificateKind::Element);
     // a motion moves octant b of the torus to octant apply_octant(b): mask bits likewise
@@ -60,7 +61,7 @@ CertificateSet certify_strong(const ElementLibrary& library, const TransitionRul
         return build_periodic_configuration(static_cast<std::uint8_t>(mask), rule, library).complex;
     };
     const std::int64_t octant = 2 * detail::common_unit(library);
-    const std::vector<TorusClass> classes = torus_classes(256, image, build, torus_translations(), octant);
+    const std::vector<TorusClass> classes = torus_classes(256, image, build, torus_translations(), octant, progress, "strong tori");
     set.add_ranges({.prefix = "configurations", .digits = 3, .max_count = 12}, classes.size(),
                    CertificateKind::Configuration,
                    [&](std::size_t r) { return torus_certificate(classes[r], rule, library); },

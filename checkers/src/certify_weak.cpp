@@ -55,7 +55,8 @@ std::string weak_certificate(const TorusClass& c, const std::vector<LevelAssignm
 
 }  // namespace
 
-CertificateSet certify_weak(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir) {
+CertificateSet certify_weak(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir,
+                            const Progress& progress) {
     const std::vector<LevelAssignment> all = weak_configurations();
     std::map<LevelAssignment, std::size_t> label;
     for (std::size_t i = 0; i < all.size(); ++i) label[all[i]] = i;
@@ -66,7 +67,7 @@ CertificateSet certify_weak(const ElementLibrary& library, const TransitionRule&
     };
     const auto build = [&](std::size_t i) { return build_periodic_levels(torus_levels(all[i]), 2, rule, library).complex; };
     const std::int64_t octant = 4 * detail::common_unit(library);
-    const std::vector<TorusClass> classes = torus_classes(all.size(), image, build, torus_motions(), octant);
+    const std::vector<TorusClass> classes = torus_classes(all.size(), image, build, torus_motions(), octant, progress, "weak tori");
 
     CertificateSet set(dir, static_cast<std::int64_t>(all.size()));
     set.add_ranges({.prefix = "configurations", .digits = 3, .max_bytes = 512 * 1024}, classes.size(),

@@ -56,7 +56,7 @@ Outcome full_check(const Window& w, const TransitionRule& rule, detail::Template
 
 // Every window's outcome, class by class (see the top of the file).
 std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const TransitionRule& rule,
-                                    const ElementLibrary& library, Caches& caches) {
+                                    const ElementLibrary& library, Caches& caches, const Progress& progress) {
     const detail::PlacementCodes codes(library);
     struct Keyed {
         bool keyed = false;  // false: the rule threw (the full check reports it)
@@ -83,7 +83,10 @@ std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const Tr
     }
     std::vector<Outcome> out(windows.size());
     std::vector<OrientedForm> forms(representative.size());
+    // Work units: each representative's full check, then each window's (mostly a comparison).
+    ProgressCounter counter(progress, "windows", representative.size() + windows.size());
     tbb::parallel_for(std::size_t{0}, representative.size(), [&](std::size_t c) {
+        counter.add();
         const std::size_t i = representative[c];
         detail::TemplateCache& cache = caches.local();
         ConfigurationComplex built;
@@ -91,6 +94,7 @@ std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const Tr
         if (out[i].ok) forms[c] = window_form(built.complex, keys[i].s);  // empty: members get full checks
     });
     tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t i) {
+        counter.add();
         detail::TemplateCache& cache = caches.local();
         if (!keys[i].keyed) return void(out[i] = full_check(windows[i], rule, cache));
         const std::size_t rep = representative[class_index[i]];
@@ -120,6 +124,7 @@ void check_observed(const std::vector<Window>& windows, const TransitionRule& ru
     const auto stop = [&] { return options.stop_after_failures && failed >= options.stop_after_failures; };
     std::vector<ConfigurationComplex> built(std::min(kChunk, windows.size()));
     std::vector<ConfigurationReport> reports(built.size());
+    ProgressCounter counter(options.progress, "windows", windows.size());
     for (std::size_t begin = 0; begin < windows.size() && !stop(); begin += kChunk) {
         const std::size_t n = std::min(kChunk, windows.size() - begin);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -135,6 +140,7 @@ void check_observed(const std::vector<Window>& windows, const TransitionRule& ru
             failed += out[begin + i].ok ? 0 : 1;
             options.on_window({w.type->parity, w.index, w.type->reads, w.pattern, &built[i], &reports[i]});
         }
+        counter.add(n);
     }
 }
 
@@ -147,6 +153,7 @@ CompositionalResult run_compositional(const TransitionRule& rule, const ElementL
     result.rule = rule.name();
     result.reach_octants = static_cast<int>(reach_bits(rule).size());
     check_lemma(rule, result);
+    report_progress(options.progress, "window types", 0, 0);  // the enumeration's size is not known yet
     // The 8 types' enumerations are independent: in parallel, each into its own slot.
     std::vector<WindowType> types(8);
     std::vector<WindowTypeResult> type_results(8);
@@ -167,7 +174,7 @@ CompositionalResult run_compositional(const TransitionRule& rule, const ElementL
     if (options.on_window)
         check_observed(windows, rule, caches, options, outcomes);
     else
-        outcomes = check_by_class(windows, rule, library, caches);
+        outcomes = check_by_class(windows, rule, library, caches, options.progress);
 
     // The tally of a serial run, window by window (stopping as it would).
     const auto stop = [&] { return options.stop_after_failures && result.failed >= options.stop_after_failures; };

@@ -90,7 +90,9 @@ void require_closed_torus(const CellComplex& complex, std::int64_t octant, const
 
 std::vector<TorusClass> torus_classes(std::size_t n, const std::function<std::size_t(std::size_t, const TorusMotion&)>& image,
                                       const std::function<CellComplex(std::size_t)>& build,
-                                      const std::vector<TorusMotion>& motions, std::int64_t octant) {
+                                      const std::vector<TorusMotion>& motions, std::int64_t octant,
+                                      const Progress& progress, std::string_view stage) {
+    ProgressCounter counter(progress, stage, n);
     std::vector<char> done(n, 0);
     std::vector<TorusClass> out;
     for (std::size_t rep = 0; rep < n; ++rep) {
@@ -114,6 +116,7 @@ std::vector<TorusClass> torus_classes(std::size_t n, const std::function<std::si
                                      " is not the image of the torus of label " + std::to_string(rep) +
                                      " under any motion mapping one to the other");
         std::sort(c.members.begin() + 1, c.members.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        counter.add(c.members.size());
         out.push_back(std::move(c));
     }
     return out;

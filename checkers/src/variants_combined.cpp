@@ -110,7 +110,103 @@ bool CombinedReport::strong_optimal() const {
     return std::all_of(classes.begin(), classes.end(), [](const CombinedClass& c) { return c.strong_optimal(); });
 }
 
-CombinedReport check_combined(const ElementLibrary& shipped, std::size_t max_free) {
+namespace {
+
+// One transition class before its enumeration: the free crossings, StrongRule's choice at
+// each, and the groups of crossings enumerated jointly (empty: too many to enumerate).
+struct PreparedClass {
+    CombinedClass c;
+    std::vector<std::size_t> strong_key;
+    std::map<int, std::array<int, 2>> options;  // crossing key -> the two chain axes
+    std::unordered_map<int, int> strong_lower;
+    std::vector<std::vector<int>> groups;
+    [[nodiscard]] std::size_t assignments() const {
+        std::size_t n = 0;
+        if (c.enumerated)
+            for (const auto& g : groups) n += std::size_t{1} << g.size();
+        return n;
+    }
+};
+
+PreparedClass prepare_class(std::uint8_t rep, const TransitionRule& strong, const ElementLibrary& library,
+                            std::size_t max_free) {
+    PreparedClass p;
+    CombinedClass& c = p.c;
+    c.representative = rep;
+    for (int b = 0; b < 8; ++b) c.fine += (rep >> b) & 1;
+    const ConfigurationReport strong_report = check_periodic_configuration(rep, strong, library);
+    c.strong_valences = strong_report.dual_edge_valences;
+    p.strong_key = ranking_key(c.strong_valences);
+    // free crossings: those on an interface face of a leaf with two or three interfaces
+    const ConfigurationComplex built = build_periodic_configuration(rep, strong, library);
+    auto& options = p.options;
+    for (const auto& leaf : built.coarse_leaves) {
+        const Signature s = required_signature(leaf.context);
+        if (std::popcount(s.interfaces) < 2) continue;
+        for (int n = 0; n < 3; ++n)
+            if (s.interfaces & (1u << n)) options[crossing_key(leaf.context, n)] = {(n + 1) % 3, (n + 2) % 3};
+    }
+    c.free_crossings = options.size();
+    // StrongRule's lower chain at every free crossing, and the components of the free
+    // crossings linked by a leaf that sees two or three of them.
+    std::unordered_map<int, int> parent;
+    std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+    for (const auto& [key, axes] : options) parent[key] = key;
+    for (const auto& leaf : built.coarse_leaves) {
+        const Signature s = required_signature(leaf.context);
+        int first = -1;
+        for (int n = 0; n < 3; ++n) {
+            if (!(s.interfaces & (1u << n)) || !options.count(crossing_key(leaf.context, n))) continue;
+            const int key = crossing_key(leaf.context, n);
+            p.strong_lower[key] = s.lower[n];
+            if (std::popcount(s.interfaces) < 2) continue;
+            if (first < 0) first = key;
+            else parent[find(key)] = find(first);
+        }
+    }
+    std::map<int, std::vector<int>> components;
+    for (const auto& [key, axes] : options) components[find(key)].push_back(key);
+    if (options.size() <= max_free) {
+        p.groups.emplace_back();
+        for (const auto& [key, axes] : options) p.groups.back().push_back(key);
+    } else {
+        c.componentwise = true;
+        for (auto& [root, keys] : components) p.groups.push_back(keys);
+    }
+    for (const auto& [root, keys] : components) c.components.push_back(keys.size());
+    std::sort(c.components.rbegin(), c.components.rend());
+    c.enumerated = std::none_of(p.groups.begin(), p.groups.end(), [&](const auto& g) { return g.size() > max_free; });
+    return p;
+}
+
+// Every assignment of each group installed and ranked against StrongRule's.
+void enumerate_class(PreparedClass& p, const ElementLibrary& library, ProgressCounter& counter) {
+    CombinedClass& c = p.c;
+    std::vector<std::size_t> best_key;
+    std::unordered_map<int, int> lower;
+    const CrossingRule rule(lower);
+    for (const auto& group : p.groups)
+        for (std::size_t bits = 0; bits < (std::size_t{1} << group.size()); ++bits) {
+            lower = p.strong_lower;  // crossings outside the group keep StrongRule's choice
+            for (std::size_t k = 0; k < group.size(); ++k) lower[group[k]] = p.options.at(group[k])[(bits >> k) & 1];
+            ++c.assignments;
+            const ConfigurationReport r = check_periodic_configuration(c.representative, rule, library);
+            counter.add();
+            if (!r.ok()) continue;
+            ++c.valid;
+            const auto key = ranking_key(r.dual_edge_valences);
+            if (key < p.strong_key) ++c.assignments_better;
+            if (key == p.strong_key) ++c.assignments_equal;
+            if (best_key.empty() || key < best_key) {
+                best_key = key;
+                c.best_valences = r.dual_edge_valences;
+            }
+        }
+}
+
+}  // namespace
+
+CombinedReport check_combined(const ElementLibrary& shipped, std::size_t max_free, const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     CombinedReport out;
     out.limit = max_free;
@@ -120,78 +216,17 @@ CombinedReport check_combined(const ElementLibrary& shipped, std::size_t max_fre
     std::set<std::uint8_t> representatives;
     for (int m = 1; m < 255; ++m) representatives.insert(class_representative(static_cast<std::uint8_t>(m)));
     const StrongRule strong;
+    // All classes prepared first, so the progress counts assignments of the whole run.
+    std::vector<PreparedClass> prepared;
+    std::size_t total = 0;
     for (std::uint8_t rep : representatives) {
-        CombinedClass c;
-        c.representative = rep;
-        for (int b = 0; b < 8; ++b) c.fine += (rep >> b) & 1;
-        const ConfigurationReport strong_report = check_periodic_configuration(rep, strong, library);
-        c.strong_valences = strong_report.dual_edge_valences;
-        const auto strong_key = ranking_key(c.strong_valences);
-        // free crossings: those on an interface face of a leaf with two or three interfaces
-        const ConfigurationComplex built = build_periodic_configuration(rep, strong, library);
-        std::map<int, std::array<int, 2>> options;  // key -> the two chain axes
-        for (const auto& leaf : built.coarse_leaves) {
-            const Signature s = required_signature(leaf.context);
-            if (std::popcount(s.interfaces) < 2) continue;
-            for (int n = 0; n < 3; ++n)
-                if (s.interfaces & (1u << n)) options[crossing_key(leaf.context, n)] = {(n + 1) % 3, (n + 2) % 3};
-        }
-        c.free_crossings = options.size();
-        // StrongRule's lower chain at every free crossing, and the components of the free
-        // crossings linked by a leaf that sees two or three of them.
-        std::unordered_map<int, int> strong_lower, parent;
-        std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
-        for (const auto& [key, axes] : options) parent[key] = key;
-        for (const auto& leaf : built.coarse_leaves) {
-            const Signature s = required_signature(leaf.context);
-            int first = -1;
-            for (int n = 0; n < 3; ++n) {
-                if (!(s.interfaces & (1u << n)) || !options.count(crossing_key(leaf.context, n))) continue;
-                const int key = crossing_key(leaf.context, n);
-                strong_lower[key] = s.lower[n];
-                if (std::popcount(s.interfaces) < 2) continue;
-                if (first < 0) first = key;
-                else parent[find(key)] = find(first);
-            }
-        }
-        std::map<int, std::vector<int>> components;
-        for (const auto& [key, axes] : options) components[find(key)].push_back(key);
-        std::vector<std::vector<int>> groups;
-        if (options.size() <= max_free) {
-            groups.emplace_back();
-            for (const auto& [key, axes] : options) groups.back().push_back(key);
-        } else {
-            c.componentwise = true;
-            for (auto& [root, keys] : components) groups.push_back(keys);
-        }
-        for (const auto& [root, keys] : components) c.components.push_back(keys.size());
-        std::sort(c.components.rbegin(), c.components.rend());
-        if (std::any_of(groups.begin(), groups.end(), [&](const auto& g) { return g.size() > max_free; })) {
-            out.classes.push_back(std::move(c));
-            continue;
-        }
-        c.enumerated = true;
-        std::vector<std::size_t> best_key;
-        std::unordered_map<int, int> lower;
-        const CrossingRule rule(lower);
-        for (const auto& group : groups)
-            for (std::size_t bits = 0; bits < (std::size_t{1} << group.size()); ++bits) {
-                lower = strong_lower;  // crossings outside the group keep StrongRule's choice
-                for (std::size_t k = 0; k < group.size(); ++k)
-                    lower[group[k]] = options.at(group[k])[(bits >> k) & 1];
-                ++c.assignments;
-                const ConfigurationReport r = check_periodic_configuration(rep, rule, library);
-                if (!r.ok()) continue;
-                ++c.valid;
-                const auto key = ranking_key(r.dual_edge_valences);
-                if (key < strong_key) ++c.assignments_better;
-                if (key == strong_key) ++c.assignments_equal;
-                if (best_key.empty() || key < best_key) {
-                    best_key = key;
-                    c.best_valences = r.dual_edge_valences;
-                }
-            }
-        out.classes.push_back(std::move(c));
+        prepared.push_back(prepare_class(rep, strong, library, max_free));
+        total += prepared.back().assignments();
+    }
+    ProgressCounter counter(progress, "assignments", total);
+    for (PreparedClass& p : prepared) {
+        if (p.c.enumerated) enumerate_class(p, library, counter);
+        out.classes.push_back(std::move(p.c));
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;

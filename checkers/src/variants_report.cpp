@@ -212,12 +212,12 @@ bool VariantsReport::ok() const {
     return true;
 }
 
-VariantsReport check_variants(bool combined, std::size_t max_free) {
+VariantsReport check_variants(bool combined, std::size_t max_free, const Progress& progress) {
     const ElementLibrary shipped = ElementLibrary::load_default();
     VariantsReport out;
     for (Region r : {Region::Flat, Region::ConcaveEdge, Region::ConcaveCorner})
         out.regions.push_back(check_region(r, shipped));
-    if (combined) out.combined = check_combined(shipped, max_free);
+    if (combined) out.combined = check_combined(shipped, max_free, progress);
     return out;
 }
 

@@ -30,12 +30,13 @@ struct WindowClass {
 }  // namespace
 
 CertificateSet certify_windows(const TransitionRule& rule, const ElementLibrary& library, const std::filesystem::path& dir,
-                               std::size_t per_file) {
+                               std::size_t per_file, const Progress& progress) {
     PlacementCodes codes(library);
     std::map<WindowKey, std::size_t> class_of;
     std::vector<WindowClass> classes;
     std::int64_t label = 0;
     CompositionalOptions options;
+    options.progress = progress;
     options.on_window = [&](const CompositionalWindow& w) {
         if (!w.report->ok()) throw std::runtime_error("certify_windows: window " + describe_window(w) + " fails: " + w.report->summary());
         const auto [best, best_s] = detail::window_class_key(w.parity, w.built->coarse_leaves, codes);

@@ -18,10 +18,11 @@ std::string InstallVerification::summary() const {
     return out;
 }
 
-InstallVerification verify_installation(const InstallResult& installed) {
+InstallVerification verify_installation(const InstallResult& installed, const Progress& progress) {
     InstallVerification v;
     const CellComplex& cx = installed.complex;
     const std::int64_t extent = installed.unit << installed.max_level;
+    report_progress(progress, "validate", 0, kVerifySteps);
     v.validation = validate(cx);
     const Incidence inc(cx);
     const auto inside = [extent](const LatticePoint& p) {
@@ -38,10 +39,13 @@ InstallVerification verify_installation(const InstallResult& installed) {
             }
         return false;
     };
+    report_progress(progress, "open faces", 1, kVerifySteps);
     v.open_faces = detail::check_open_faces(cx, inc, inside, on_surface, v.validation);
+    report_progress(progress, "interior dual", 2, kVerifySteps);
     const DualResult dual = interior_dual(cx, inc);
     v.hexes = dual.mesh.hexes.size();
     v.interior_vertices = v.hexes + dual.errors.size();
+    report_progress(progress, "valences", 3, kVerifySteps);
     v.face_sizes = face_size_histogram(cx);
     v.dual_edge_valences = interior_dual_edge_valence_histogram(cx, inc);
     return v;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <map>
 #include <stdexcept>
+#include <string_view>
 
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/geometry/hex_topology.hpp"
@@ -21,10 +22,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The stages in run order: progress reports stage i as i of their number done (a stage
+// missing here reports all done: add new stages to the list).
+constexpr std::array<std::string_view, 13> kStages{"octree", "balance", "pair",     "install",  "verify", "dual",  "core",
+                                                   "pad",    "features", "smooth", "optimise", "check",  "report"};
+
 // Runs one named stage: reports its name, times it into `ms`, returns what it returns.
 template <class Stage>
-auto timed(const MeshPipelineOptions& options, const char* name, double& ms, Stage&& stage) {
-    if (options.progress) options.progress(name);
+auto timed(const MeshPipelineOptions& options, std::string_view name, double& ms, Stage&& stage) {
+    if (options.progress) {
+        const auto i = static_cast<std::size_t>(std::find(kStages.begin(), kStages.end(), name) - kStages.begin());
+        options.progress(name, i, kStages.size());
+    }
     const auto t0 = Clock::now();
     struct Stop {
         Clock::time_point t0;

@@ -37,6 +37,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dualhex/audit/mesh_file.hpp"
+#include "dualhex/topology/progress.hpp"
 
 namespace dualhex::audit {
 
@@ -45,6 +46,8 @@ enum class AuditMode { Auto, Hex, Polyhedral };
 struct AuditOptions {
     AuditMode mode = AuditMode::Auto;
     std::size_t max_listed = 10;  ///< violations listed per check
+    /// Optional: before each step of the audit (hex: 6, polyhedral: 3), the steps done of all.
+    Progress progress;
 };
 
 /// One located violation.

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "dualhex/topology/cell_complex.hpp"
+#include "dualhex/topology/progress.hpp"
 
 namespace dualhex {
 
@@ -138,7 +139,9 @@ struct CertificateSet {
 /// translation class (the smallest mask; `covers` lists the class) after checking, for every
 /// other mask, that its torus as built IS the translate (torus_classes.hpp);
 /// std::runtime_error if not (then the rule is not translation invariant).
-CertificateSet certify_strong(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir);
+/// `progress` (optional): stage "strong tori", the masks classified of 256.
+CertificateSet certify_strong(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir,
+                              const Progress& progress = {});
 
 /// The 487 weakly balanced assignments (weak_configurations() order = the labels), each on
 /// its torus (build_periodic_levels with 2x2x2 octant cubes), into `dir`:
@@ -149,7 +152,9 @@ CertificateSet certify_strong(const ElementLibrary& library, const TransitionRul
 ///                                   certify_strong)
 ///   manifest                        covers 487
 /// std::runtime_error if a torus is not closed with every vertex interior and in the period.
-CertificateSet certify_weak(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir);
+/// `progress` (optional): stage "weak tori", the labels classified of 487.
+CertificateSet certify_weak(const ElementLibrary& library, const TransitionRule& rule, const std::filesystem::path& dir,
+                            const Progress& progress = {});
 
 /// The 14 crossing variants (schemes/variants.hpp; labels in `dualhex variants` order: flat
 /// x z, concave edge LL LU UL UU, concave corner XXY .. ZYZ), into `dir`:
@@ -170,6 +175,8 @@ struct CertifyResult {
     [[nodiscard]] std::size_t certificates() const;
     [[nodiscard]] std::size_t bytes() const;
 };
-CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir);
+/// `progress` (optional) sees each part's stages in turn (the windows: checked of all).
+CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir,
+                              const Progress& progress = {});
 
 }  // namespace dualhex

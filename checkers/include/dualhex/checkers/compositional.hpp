@@ -34,6 +34,7 @@
 
 #include "dualhex/checkers/configuration_report.hpp"
 #include "dualhex/schemes/element_library.hpp"
+#include "dualhex/topology/progress.hpp"
 
 namespace dualhex {
 
@@ -76,6 +77,8 @@ struct CompositionalOptions {
     std::function<void(const CompositionalWindow&)> on_window;
     /// Stop after this many failing windows (0: never; the counts are then partial).
     std::size_t stop_after_failures = 0;
+    /// Optional: stage "windows", the distinct windows checked of all of them.
+    Progress progress;
 };
 
 /// Runs the enumeration. Rule errors (UnknownPatternError, a missing element) become

@@ -22,6 +22,7 @@
 
 #include "dualhex/topology/cell_complex.hpp"
 #include "dualhex/topology/cube_symmetry.hpp"
+#include "dualhex/topology/progress.hpp"
 
 namespace dualhex {
 
@@ -65,9 +66,11 @@ struct TorusClass {
 /// motion)` is the label of the moved configuration, `build(label)` its torus as built.
 /// std::runtime_error naming the label if a member's torus is not the image of the
 /// representative's under any motion of `motions` mapping one label to the other.
+/// `progress` (optional) sees `stage` as the labels classified of n.
 [[nodiscard]] std::vector<TorusClass> torus_classes(std::size_t n,
                                                     const std::function<std::size_t(std::size_t, const TorusMotion&)>& image,
                                                     const std::function<CellComplex(std::size_t)>& build,
-                                                    const std::vector<TorusMotion>& motions, std::int64_t octant);
+                                                    const std::vector<TorusMotion>& motions, std::int64_t octant,
+                                                    const Progress& progress = {}, std::string_view stage = {});
 
 }  // namespace dualhex

@@ -34,6 +34,7 @@
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/placement.hpp"
 #include "dualhex/schemes/variants.hpp"
+#include "dualhex/topology/progress.hpp"
 
 namespace dualhex::variants {
 
@@ -127,8 +128,10 @@ struct CombinedReport {
 };
 
 /// Enumerates every assignment of the free crossings of each transition class (up to
-/// 2^max_free_crossings per class).
-[[nodiscard]] CombinedReport check_combined(const ElementLibrary& shipped, std::size_t max_free_crossings = 12);
+/// 2^max_free_crossings per class). `progress` (optional): stage "assignments", those
+/// installed and checked of all the classes'.
+[[nodiscard]] CombinedReport check_combined(const ElementLibrary& shipped, std::size_t max_free_crossings = 12,
+                                            const Progress& progress = {});
 
 struct VariantsReport {
     std::vector<RegionReport> regions;  ///< flat, concave edge, concave corner
@@ -138,7 +141,9 @@ struct VariantsReport {
     [[nodiscard]] bool ok() const;
 };
 
-[[nodiscard]] VariantsReport check_variants(bool combined = false, std::size_t max_free_crossings = 12);
+/// `progress` (optional): the combined enumeration's (check_combined).
+[[nodiscard]] VariantsReport check_variants(bool combined = false, std::size_t max_free_crossings = 12,
+                                            const Progress& progress = {});
 
 /// The tables (per region: variants, classes by rank; then the combined table).
 void print(std::ostream& os, const VariantsReport& report);

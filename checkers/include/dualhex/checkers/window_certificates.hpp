@@ -13,8 +13,10 @@ namespace dualhex {
 ///                            per file; `covers` lists the enumeration indices of its members
 ///   manifest                 covers = the number of windows enumerated
 /// Every member is checked to be the exact image of its class's representative; throws
-/// std::runtime_error if one is not, or if any window fails.
+/// std::runtime_error if one is not, or if any window fails. `progress` (optional): as
+/// run_compositional's.
 CertificateSet certify_windows(const TransitionRule& rule, const ElementLibrary& library,
-                               const std::filesystem::path& dir, std::size_t per_file = 100);
+                               const std::filesystem::path& dir, std::size_t per_file = 100,
+                               const Progress& progress = {});
 
 }  // namespace dualhex

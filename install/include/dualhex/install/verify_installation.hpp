@@ -7,6 +7,7 @@
 #include <string>
 
 #include "dualhex/install/install.hpp"
+#include "dualhex/topology/progress.hpp"
 #include "dualhex/topology/validation.hpp"
 
 namespace dualhex {
@@ -23,6 +24,9 @@ struct InstallVerification {
     [[nodiscard]] bool ok() const { return validation.ok() && open_faces == 0 && hexes == interior_vertices; }
     [[nodiscard]] std::string summary() const;
 };
-[[nodiscard]] InstallVerification verify_installation(const InstallResult& installed);
+/// `progress` (optional): before each of its kVerifySteps steps ("validate", "open faces",
+/// "interior dual", "valences"), the steps done of kVerifySteps.
+[[nodiscard]] InstallVerification verify_installation(const InstallResult& installed, const Progress& progress = {});
+inline constexpr std::size_t kVerifySteps = 4;
 
 }  // namespace dualhex

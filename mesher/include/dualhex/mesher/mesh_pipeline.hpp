@@ -50,6 +50,7 @@
 #include "dualhex/mesher/core_selection.hpp"
 #include "dualhex/geometry/surface_distance.hpp"
 #include "dualhex/mesher/quality_state.hpp"
+#include "dualhex/topology/progress.hpp"
 
 namespace dualhex::mesher {
 
@@ -70,8 +71,9 @@ struct MeshPipelineOptions : MeshSizeOptions {
     CoreOptions core;
     PadOptions pad;
     OptimiseOptions optimise;           ///< optimise.min_quality: the target minimum scaled Jacobian
-    /// Called with a short stage name ("octree", "pair", ...) before each stage (may be empty).
-    std::function<void(const std::string&)> progress;
+    /// Called before each stage with its short name ("octree", "pair", ...) and the number
+    /// of stages done of all of them (may be empty).
+    Progress progress;
 };
 
 /// Milliseconds per stage. balance_pair = balance + pair: the balanced grid first, then the
