@@ -3,11 +3,13 @@
 // cells are caught.
 #include <gtest/gtest.h>
 
+#include "dualhex/checkers/boundary_certificates.hpp"
 #include "dualhex/checkers/compositional_boundary.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
 #include "dualhex/topology/complex_builder.hpp"
 #include "dualhex/topology/primitives.hpp"
+#include "dualhex/topology/validation.hpp"
 
 namespace dualhex {
 namespace {
@@ -131,6 +133,20 @@ TEST(RootBoundaryCheck, PlainCubesPassAndEachChangeFails) {
         EXPECT_FALSE(r.ok()) << static_cast<int>(c);
         EXPECT_EQ(r.checked, 9u);
     }
+}
+
+// The certificates' doubling (boundary_certificates.hpp): the plain half box reflected across
+// x = 0 is the valid box of 4^3 cubes; the inverted cube's copy stays inverted.
+TEST(RootBoundaryCheck, DoublingReflectsAcrossTheRootPlanes) {
+    const CellComplex doubled = double_half_window(half_box(Change::None), {1, 0, 0});
+    EXPECT_EQ(doubled.n_cells(), 64u);
+    EXPECT_EQ(doubled.n_vertices(), 125u);  // welded on the plane
+    const ValidationReport r = validate(doubled);
+    EXPECT_TRUE(r.ok());
+    EXPECT_GT(r.checked_vertices, 0u);
+    for (const LatticePoint& p : doubled.positions()) EXPECT_TRUE(-2 <= p.x && p.x <= 2) << p.x;
+    EXPECT_FALSE(validate(double_half_window(half_box(Change::Reversed), {1, 0, 0})).ok());
+    EXPECT_EQ(double_half_window(half_box(Change::None), {1, 1, 0}).n_cells(), 128u);  // 4 copies of 32
 }
 
 TEST(RootBoundaryCheck, HexOrientationIsExact) {

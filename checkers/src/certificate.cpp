@@ -2,6 +2,7 @@
 // proofs/README.md). Untrusted: the claims come from dualhex's topology code; the
 // independent checker in proofs/checker decides whether they hold.
 #include "dualhex/checkers/certificate.hpp"
+#include "dualhex/checkers/boundary_certificates.hpp"
 #include "dualhex/checkers/window_certificates.hpp"
 
 #include <algorithm>
@@ -192,6 +193,7 @@ CertifyResult certify_library(const ElementLibrary& library, const std::filesyst
     result.sets.push_back(certify_weak(library, WeakRule{}, dir / "weak"));
     result.sets.push_back(certify_variants(library, dir / "variants"));
     result.sets.push_back(certify_windows(StrongRule{}, library, dir / "windows"));
+    result.sets.push_back(certify_boundary_windows(StrongRule{}, library, dir / "boundary"));
     return result;
 }
 

@@ -266,12 +266,13 @@ BoundaryResult run_compositional_boundary(const TransitionRule& rule, const Elem
         for (std::uint64_t p : patterns[i]) windows.emplace_back(i, p);
     tbb::enumerable_thread_specific<detail::TemplateCache> caches([&] { return detail::TemplateCache(library); });
     std::vector<Outcome> outcomes(windows.size());
+    std::vector<CellComplex> kept(options.on_window ? windows.size() : 0);  // for the observer
     tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t w) {
         detail::TemplateCache& cache = caches.local();
         const BoundaryType& t = types[windows[w].first];
         Outcome& o = outcomes[w];
         try {
-            const CellComplex cx = build_half_window(t, windows[w].second, rule, policy, cache);
+            CellComplex cx = build_half_window(t, windows[w].second, rule, policy, cache);
             const BoundaryVertexReport r = check_boundary_vertices(cx, cache.unit(), t.sides);
             o.ok = r.ok() && r.checked > 0;
             o.checked = r.checked;
@@ -282,6 +283,7 @@ BoundaryResult run_compositional_boundary(const TransitionRule& rule, const Elem
                 for (int a = 0; a < 3; ++a) k += t.sides[static_cast<std::size_t>(a)] != 0 && p[a] == 0 ? 1 : 0;
                 ++o.per_kind[static_cast<std::size_t>(k - 1)];
             }
+            if (options.on_window) kept[w] = std::move(cx);
         } catch (const std::exception& e) {
             o.why = std::string("not built: ") + e.what();
         }
@@ -302,6 +304,12 @@ BoundaryResult run_compositional_boundary(const TransitionRule& rule, const Elem
         result.windows += tr.windows;
         result.passed += tr.passed;
         result.types.push_back(tr);
+    }
+    if (options.on_window) {
+        const std::int64_t unit = caches.local().unit();
+        for (std::size_t i = 0, w = 0; i < types.size(); ++i)
+            for (std::size_t n = 0; n < patterns[i].size(); ++n, ++w)
+                options.on_window({&result.types[i], w, describe(types[i], patterns[i][n]), &kept[w], unit, outcomes[w].ok});
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

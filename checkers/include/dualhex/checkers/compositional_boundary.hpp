@@ -69,10 +69,22 @@ struct BoundaryResult {
     [[nodiscard]] bool all_passed() const { return windows > 0 && passed == windows && failed == 0; }
 };
 
+/// One distinct half window as built (the box of check_boundary_vertices, half = unit).
+struct BoundaryWindowView {
+    const BoundaryTypeResult* type = nullptr;
+    std::size_t index = 0;  ///< in enumeration order over all types
+    std::string witness;    ///< the type and a witness pattern
+    const CellComplex* half = nullptr;
+    std::int64_t unit = 0;
+    bool passed = false;
+};
+
 struct BoundaryOptions {
     /// Overrides the policy (tests: a broken policy must be caught).
     OutsidePolicy policy;
     std::size_t stop_after_failures = 0;  ///< 0: never stop
+    /// Optional: sees every window in enumeration order after all are checked (certificates).
+    std::function<void(const BoundaryWindowView&)> on_window;
 };
 
 [[nodiscard]] BoundaryResult run_compositional_boundary(const TransitionRule& rule, const ElementLibrary& library,
