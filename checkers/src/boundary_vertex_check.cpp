@@ -3,7 +3,6 @@
 // lattice positions, combinatorial links, the clipped dual with rational corners.
 #include <map>
 #include <numeric>
-#include <set>
 #include <sstream>
 
 #include "dualhex/checkers/compositional_boundary.hpp"

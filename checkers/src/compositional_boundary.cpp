@@ -8,7 +8,6 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
-#include <unordered_map>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -20,9 +19,8 @@ namespace dualhex {
 namespace {
 
 using detail::Index3;
+using compositional_detail::local_of_bit;
 using compositional_detail::reach_bits;
-
-std::array<int, 3> local_of_bit(int b) { return {(b & 3) - 2, ((b >> 2) & 3) - 2, ((b >> 4) & 3) - 2}; }
 
 bool inside(const Index3& o, const RootSides& s) {
     for (std::size_t a = 0; a < 3; ++a)
