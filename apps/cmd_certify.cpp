@@ -1,6 +1,7 @@
 // dualhex certify --out DIR: writes the certificates of the element library, the 256
 // configurations under the strong rule (DIR), the 487 weakly balanced ones under the weak rule
-// (DIR/weak) and the 14 crossing variants (DIR/variants), each directory with its manifest
+// (DIR/weak), the 14 crossing variants (DIR/variants), the compositional windows (DIR/windows)
+// and the root-boundary half windows (DIR/boundary), each directory with its manifest
 // (format and checker: proofs/README.md). The certificates are untrusted output;
 // `dualhex-proof-checker DIR/manifest` (and DIR/weak/manifest, DIR/variants/manifest)
 // re-checks them. Without --force DIR must not exist or be empty.
@@ -16,7 +17,8 @@ namespace dualhex::app {
 void register_certify(CLI::App& app) {
     auto* sub = app.add_subcommand("certify",
                                    "Write certificates (elements, the 256 strong and 487 weak configurations, the 14 "
-                                   "crossing variants) for the independent checker dualhex-proof-checker");
+                                   "crossing variants, the compositional and root-boundary windows) for the "
+                                   "independent checker dualhex-proof-checker");
     struct Options {
         std::string out, elements;
         bool force = false, json = false, no_progress = false;

@@ -373,5 +373,18 @@ TEST(ProofsCertificates, MutationsOfCompositionalWindows) {
     EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
 }
 
+TEST(ProofsCertificates, MutationsOfBoundaryWindows) {
+    Tally tally;  // the doubled root-boundary half windows: the largest (every 4th) and the smallest
+    const std::vector<std::string> windows = shipped_certificates(kShipped / "boundary", [](const std::string&) { return true; });
+    ASSERT_EQ(windows.size(), 57u);
+    const auto shorter = [](const std::string& a, const std::string& b) { return a.size() < b.size(); };
+    check_mutations({parse(*std::max_element(windows.begin(), windows.end(), shorter))}, "boundary-large", tally, 4);
+    check_mutations({parse(*std::min_element(windows.begin(), windows.end(), shorter))}, "boundary-small", tally, 1);
+    report(tally);
+    EXPECT_GT(tally.rejected, 100u);
+    EXPECT_EQ(tally.per_kind["rotate loop"].second, 0u);
+    EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
+}
+
 }  // namespace
 }  // namespace dualhex

@@ -2,6 +2,7 @@
 // proofs/README.md). Untrusted: the claims come from dualhex's topology code; the
 // independent checker in proofs/checker decides whether they hold.
 #include "dualhex/checkers/certificate.hpp"
+#include "dualhex/checkers/boundary_certificates.hpp"
 #include "dualhex/checkers/window_certificates.hpp"
 
 #include <algorithm>
@@ -193,6 +194,8 @@ CertifyResult certify_library(const ElementLibrary& library, const std::filesyst
     report_progress(progress, "variants", 0, 1);
     result.sets.push_back(certify_variants(library, dir / "variants"));
     result.sets.push_back(certify_windows(StrongRule{}, library, dir / "windows", 100, progress));
+    report_progress(progress, "boundary windows", 0, 1);
+    result.sets.push_back(certify_boundary_windows(StrongRule{}, library, dir / "boundary"));
     return result;
 }
 

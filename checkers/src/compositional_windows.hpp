@@ -25,6 +25,8 @@ struct WindowType {
 };
 
 [[nodiscard]] std::vector<int> reach_bits(const TransitionRule& rule);
+/// The local octant (each in {-2..1}) of neighbourhood bit b.
+[[nodiscard]] std::array<int, 3> local_of_bit(int b);
 /// The lemma (compositional.hpp, 2) over every context it concerns, into result.
 void check_lemma(const TransitionRule& rule, CompositionalResult& result);
 [[nodiscard]] WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& rule);

@@ -169,7 +169,8 @@ CertificateSet certify_variants(const ElementLibrary& library, const std::filesy
 
 /// Everything `dualhex certify` writes: certify_strong (StrongRule) into `dir`,
 /// certify_weak (WeakRule) into dir/weak, certify_variants into dir/variants, certify_windows
-/// (StrongRule, window_certificates.hpp) into dir/windows.
+/// (StrongRule, window_certificates.hpp) into dir/windows, certify_boundary_windows
+/// (StrongRule, boundary_certificates.hpp) into dir/boundary.
 struct CertifyResult {
     std::vector<CertificateSet> sets;
     [[nodiscard]] std::size_t certificates() const;

@@ -1,0 +1,316 @@
+// The root-boundary enumeration (compositional_boundary.hpp): the 56 boundary types, their
+// distinct half windows (inside leaves of B(g), outside octant cubes fixed by the policy),
+// each built and checked at every vertex on its root planes.
+#include "dualhex/checkers/compositional_boundary.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "compositional_windows.hpp"
+#include "dualhex/install/element_templates.hpp"
+
+namespace dualhex {
+namespace {
+
+using detail::Index3;
+using compositional_detail::local_of_bit;
+using compositional_detail::reach_bits;
+
+bool inside(const Index3& o, const RootSides& s) {
+    for (std::size_t a = 0; a < 3; ++a)
+        if ((s[a] > 0 && o[a] < 0) || (s[a] < 0 && o[a] >= 0)) return false;
+    return true;
+}
+
+// One boundary type: g, the root sides, the inside leaves and the inside octant cubes they
+// depend on (through the policy for the outside ones they read).
+struct BoundaryType {
+    std::array<int, 3> parity{};
+    RootSides sides{};
+    std::vector<LatticePoint> leaves;
+    std::vector<Index3> vars;
+    std::vector<std::vector<int>> depends;  // per leaf: indices into vars, sorted
+    std::vector<int> own;                   // per leaf: its own octant's index
+};
+
+struct Status {  // the status function a pattern (bit i: vars[i] fine) gives the rule
+    const BoundaryType& t;
+    const OutsidePolicy& policy;
+    std::uint64_t pattern;
+    bool var(const Index3& o) const {
+        const auto it = std::find(t.vars.begin(), t.vars.end(), o);
+        return it != t.vars.end() && ((pattern >> (it - t.vars.begin())) & 1U);  // unread: cannot matter
+    }
+    const LatticePoint& reader;
+    bool operator()(const Index3& o) const {
+        if (inside(o, t.sides)) return var(o);
+        const OutsideOctant out = policy(o, t.sides, reader);
+        if (out.kind == OutsideOctant::Kind::Copy) return var(out.copy_of);
+        if (out.kind == OutsideOctant::Kind::Free) return var(o);
+        return out.kind == OutsideOctant::Kind::Fine;
+    }
+};
+
+Index3 octant_of(const LatticePoint& leaf) {
+    return {detail::floor_div(leaf.x, 2), detail::floor_div(leaf.y, 2), detail::floor_div(leaf.z, 2)};
+}
+
+BoundaryType boundary_type(const std::array<int, 3>& parity, const RootSides& sides, const TransitionRule& rule,
+                           const OutsidePolicy& policy) {
+    BoundaryType t{parity, sides, {}, {}, {}, {}};
+    const auto intern = [&](const Index3& o, bool free_outside) {
+        if (!free_outside && !inside(o, sides)) throw std::logic_error("root policy: an outside cube copies an outside cube");
+        const auto it = std::find(t.vars.begin(), t.vars.end(), o);
+        if (it != t.vars.end()) return static_cast<int>(it - t.vars.begin());
+        t.vars.push_back(o);
+        return static_cast<int>(t.vars.size() - 1);
+    };
+    for (int n = 0; n < 8; ++n) {
+        const LatticePoint leaf{parity[0] - 1 + (n & 1), parity[1] - 1 + ((n >> 1) & 1), parity[2] - 1 + ((n >> 2) & 1)};
+        bool in = true;  // leaf [l, l+1] on a root axis: l = 0 (side +1) or l = -1 (side -1)
+        for (int a = 0; a < 3; ++a)
+            if (sides[static_cast<std::size_t>(a)] != 0) in = in && leaf[a] == (sides[static_cast<std::size_t>(a)] > 0 ? 0 : -1);
+        if (!in) continue;
+        const LeafContext frame = detail::coarse_leaf_context(leaf, [](const Index3&) { return false; });
+        std::vector<int> mine{intern(octant_of(leaf), false)};
+        t.own.push_back(mine.front());
+        for (int b : reach_bits(rule)) {
+            const Index3 o = detail::world_octant(frame, local_of_bit(b));
+            if (inside(o, sides)) {
+                mine.push_back(intern(o, false));
+                continue;
+            }
+            const OutsideOctant out = policy(o, sides, leaf);
+            if (out.kind == OutsideOctant::Kind::Copy) mine.push_back(intern(out.copy_of, false));
+            if (out.kind == OutsideOctant::Kind::Free) mine.push_back(intern(o, true));
+        }
+        std::sort(mine.begin(), mine.end());
+        mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+        t.leaves.push_back(leaf);
+        t.depends.push_back(std::move(mine));
+    }
+    if (t.vars.size() > 63) throw std::length_error("root boundary: more than 63 octants read by one window");
+    return t;
+}
+
+// A leaf's outcome ("fine", "hex", "E/<symmetry>", "error: ...") for a pattern.
+std::string outcome(const BoundaryType& t, std::size_t n, std::uint64_t pattern, const TransitionRule& rule,
+                    const OutsidePolicy& policy) {
+    if ((pattern >> t.own[n]) & 1U) return "fine";
+    try {
+        const auto p = rule.place(detail::coarse_leaf_context(t.leaves[n], Status{t, policy, pattern, t.leaves[n]}));
+        return p ? p->element + "/" + std::to_string(p->symmetry.index()) : "hex";
+    } catch (const std::exception& e) {
+        return std::string("error: ") + e.what();
+    }
+}
+
+std::uint64_t scatter(std::uint64_t a, const std::vector<int>& indices) {
+    std::uint64_t pattern = 0;
+    for (std::size_t j = 0; j < indices.size(); ++j)
+        if ((a >> j) & 1U) pattern |= std::uint64_t{1} << indices[j];
+    return pattern;
+}
+
+// Every distinct window (distinct outcomes of the inside leaves), one witness pattern each:
+// the cubes several leaves depend on are enumerated jointly, each leaf's private ones per
+// leaf (they change only that leaf's outcome: the windows are the products of the choices).
+std::vector<std::uint64_t> distinct_windows(const BoundaryType& t, const TransitionRule& rule, const OutsidePolicy& policy) {
+    std::vector<int> readers(t.vars.size(), 0);
+    for (const auto& d : t.depends)
+        for (int i : d) ++readers[static_cast<std::size_t>(i)];
+    std::vector<int> shared;
+    for (std::size_t i = 0; i < t.vars.size(); ++i)
+        if (readers[i] > 1) shared.push_back(static_cast<int>(i));
+    std::vector<std::vector<int>> priv(t.leaves.size());
+    for (std::size_t n = 0; n < t.leaves.size(); ++n)
+        for (int i : t.depends[n])
+            if (readers[static_cast<std::size_t>(i)] == 1) priv[n].push_back(i);
+    std::map<std::vector<std::string>, std::uint64_t> seen;
+    std::vector<std::uint64_t> witnesses;
+    for (std::uint64_t s = 0; s < (std::uint64_t{1} << shared.size()); ++s) {
+        const std::uint64_t base = scatter(s, shared);
+        std::vector<std::vector<std::pair<std::string, std::uint64_t>>> choices(t.leaves.size());
+        for (std::size_t n = 0; n < t.leaves.size(); ++n)
+            for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv[n].size()); ++q) {
+                const std::uint64_t extra = scatter(q, priv[n]);
+                std::string o = outcome(t, n, base | extra, rule, policy);
+                auto& mine = choices[n];
+                if (std::none_of(mine.begin(), mine.end(), [&](const auto& c) { return c.first == o; }))
+                    mine.emplace_back(std::move(o), extra);
+            }
+        std::vector<std::size_t> at(t.leaves.size(), 0);  // odometer over the product
+        for (bool more = true; more;) {
+            std::vector<std::string> sig;
+            std::uint64_t pattern = base;
+            for (std::size_t n = 0; n < t.leaves.size(); ++n) {
+                sig.push_back(choices[n][at[n]].first);
+                pattern |= choices[n][at[n]].second;
+            }
+            if (seen.emplace(std::move(sig), pattern).second) witnesses.push_back(pattern);
+            more = false;
+            for (std::size_t n = 0; n < t.leaves.size() && !more; ++n)
+                if (++at[n] < choices[n].size()) more = true;
+                else at[n] = 0;
+        }
+    }
+    return witnesses;
+}
+
+// The inside leaves of B(g) for one pattern, translated so that g is the origin.
+CellComplex build_half_window(const BoundaryType& t, std::uint64_t pattern, const TransitionRule& rule,
+                              const OutsidePolicy& policy, detail::TemplateCache& cache) {
+    const std::int64_t U = cache.unit();
+    const LatticePoint g{t.parity[0], t.parity[1], t.parity[2]};
+    const auto shift = [&](const LatticePoint& p) { return p - g * U; };
+    ComplexBuilder builder;
+    std::vector<VertexHandle> vs, loop;
+    std::vector<HalfFaceHandle> hfs;
+    for (std::size_t n = 0; n < t.leaves.size(); ++n) {
+        const LatticePoint& leaf = t.leaves[n];
+        if ((pattern >> t.own[n]) & 1U) {
+            for (int c = 0; c < 8; ++c)
+                detail::emit(builder, cache.hex(U / 2), leaf * U + LatticePoint{c & 1, (c >> 1) & 1, (c >> 2) & 1} * (U / 2),
+                             1, shift, vs, loop, hfs);
+            continue;
+        }
+        const LeafContext ctx = detail::coarse_leaf_context(leaf, Status{t, policy, pattern, leaf});
+        (void)detail::emit_rule_leaf(builder, cache, rule, ctx, ctx.application_point * U, leaf * U, U, shift, vs, loop, hfs);
+    }
+    return std::move(builder).build();
+}
+
+std::string describe(const BoundaryType& t, std::uint64_t pattern) {
+    std::ostringstream os;
+    os << "g=(" << t.parity[0] << ',' << t.parity[1] << ',' << t.parity[2] << ") sides (" << t.sides[0] << ','
+       << t.sides[1] << ',' << t.sides[2] << ") fine inside {";
+    const char* sep = "";
+    for (std::size_t i = 0; i < t.vars.size(); ++i)
+        if ((pattern >> i) & 1U) {
+            os << sep << '(' << t.vars[i][0] << ',' << t.vars[i][1] << ',' << t.vars[i][2] << ')';
+            sep = " ";
+        }
+    os << '}';
+    return os.str();
+}
+
+// The 56 types: every nonempty set of root axes, a side for each, g's other coordinates.
+std::vector<std::pair<std::array<int, 3>, RootSides>> boundary_types() {
+    std::vector<std::pair<std::array<int, 3>, RootSides>> out;
+    for (unsigned axes = 1; axes < 8; ++axes)
+        for (unsigned side_bits = 0; side_bits < 8; ++side_bits) {
+            if (side_bits & ~axes) continue;
+            for (unsigned odd = 0; odd < 8; ++odd) {
+                if (odd & axes) continue;
+                std::array<int, 3> parity{};
+                RootSides sides{};
+                for (unsigned a = 0; a < 3; ++a) {
+                    parity[a] = static_cast<int>((odd >> a) & 1U);
+                    if ((axes >> a) & 1U) sides[a] = ((side_bits >> a) & 1U) ? -1 : 1;
+                }
+                out.emplace_back(parity, sides);
+            }
+        }
+    return out;
+}
+
+struct Outcome {
+    bool ok = false;
+    std::size_t checked = 0;
+    std::array<std::size_t, 3> per_kind{};
+    std::string why;
+};
+
+}  // namespace
+
+OutsidePolicy outside_policy(BoundaryPolicy policy) {
+    if (policy == BoundaryPolicy::Coarse) return [](const Index3&, const RootSides&, const LatticePoint&) { return OutsideOctant{}; };
+    if (policy == BoundaryPolicy::AnyOutside)
+        return [](const Index3&, const RootSides&, const LatticePoint&) { return OutsideOctant{OutsideOctant::Kind::Free, {}}; };
+    return [](const Index3& o, const RootSides& s, const LatticePoint&) {
+        OutsideOctant out{OutsideOctant::Kind::Copy, o};
+        for (std::size_t a = 0; a < 3; ++a)  // the reflection across x_a = 0 maps [2c, 2c+2] to [-2c-2, -2c]
+            if ((s[a] > 0 && o[a] < 0) || (s[a] < 0 && o[a] >= 0)) out.copy_of[a] = -1 - o[a];
+        return out;
+    };
+}
+
+const char* to_string(BoundaryPolicy policy) {
+    return policy == BoundaryPolicy::Coarse ? "coarse" : policy == BoundaryPolicy::Mirror ? "mirror" : "any-outside";
+}
+
+BoundaryResult run_compositional_boundary(const TransitionRule& rule, const ElementLibrary& library, BoundaryPolicy policy_kind,
+                                          const BoundaryOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const OutsidePolicy policy = options.policy ? options.policy : outside_policy(policy_kind);
+    BoundaryResult result;
+    result.rule = rule.name();
+    result.policy = to_string(policy_kind);
+    const auto kinds = boundary_types();
+    std::vector<BoundaryType> types(kinds.size());
+    std::vector<std::vector<std::uint64_t>> patterns(kinds.size());
+    tbb::parallel_for(std::size_t{0}, kinds.size(), [&](std::size_t i) {
+        types[i] = boundary_type(kinds[i].first, kinds[i].second, rule, policy);
+        patterns[i] = distinct_windows(types[i], rule, policy);
+    });
+    std::vector<std::pair<std::size_t, std::uint64_t>> windows;
+    for (std::size_t i = 0; i < types.size(); ++i)
+        for (std::uint64_t p : patterns[i]) windows.emplace_back(i, p);
+    tbb::enumerable_thread_specific<detail::TemplateCache> caches([&] { return detail::TemplateCache(library); });
+    std::vector<Outcome> outcomes(windows.size());
+    std::vector<CellComplex> kept(options.on_window ? windows.size() : 0);  // for the observer
+    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t w) {
+        detail::TemplateCache& cache = caches.local();
+        const BoundaryType& t = types[windows[w].first];
+        Outcome& o = outcomes[w];
+        try {
+            CellComplex cx = build_half_window(t, windows[w].second, rule, policy, cache);
+            const BoundaryVertexReport r = check_boundary_vertices(cx, cache.unit(), t.sides);
+            o.ok = r.ok() && r.checked > 0;
+            o.checked = r.checked;
+            o.why = r.ok() ? (r.checked ? "" : "no vertex on the root planes") : r.failures.front();
+            for (const LatticePoint& p : cx.positions()) {  // per kind, for the report
+                if (!on_checked_planes(p, cache.unit(), t.sides)) continue;
+                int k = 0;
+                for (int a = 0; a < 3; ++a) k += t.sides[static_cast<std::size_t>(a)] != 0 && p[a] == 0 ? 1 : 0;
+                ++o.per_kind[static_cast<std::size_t>(k - 1)];
+            }
+            if (options.on_window) kept[w] = std::move(cx);
+        } catch (const std::exception& e) {
+            o.why = std::string("not built: ") + e.what();
+        }
+    });
+    for (std::size_t i = 0, w = 0; i < types.size(); ++i) {
+        BoundaryTypeResult tr{types[i].parity, types[i].sides, 0, static_cast<int>(types[i].leaves.size()),
+                              static_cast<int>(types[i].vars.size()), 0, 0, 0};
+        for (int s : tr.sides) tr.planes += s != 0 ? 1 : 0;
+        for (std::size_t n = 0; n < patterns[i].size(); ++n, ++w) {
+            if (options.stop_after_failures && result.failed >= options.stop_after_failures) continue;
+            const Outcome& o = outcomes[w];
+            ++tr.windows;
+            tr.checked_vertices += o.checked;
+            for (std::size_t k = 0; k < 3; ++k) result.checked_vertices[k] += o.per_kind[k];
+            if (o.ok) ++tr.passed;
+            else if (++result.failed <= 10) result.failures.push_back(describe(types[i], patterns[i][n]) + ": " + o.why);
+        }
+        result.windows += tr.windows;
+        result.passed += tr.passed;
+        result.types.push_back(tr);
+    }
+    if (options.on_window) {
+        const std::int64_t unit = caches.local().unit();
+        for (std::size_t i = 0, w = 0; i < types.size(); ++i)
+            for (std::size_t n = 0; n < patterns[i].size(); ++n, ++w)
+                options.on_window({&result.types[i], w, describe(types[i], patterns[i][n]), &kept[w], unit, outcomes[w].ok});
+    }
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace dualhex
