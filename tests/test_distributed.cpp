@@ -123,6 +123,10 @@ TEST(Distributed, PvtuIndexesOnePiecePerRankWithGlobalVertexIds) {
     const auto again = run_dist(2, {shared("sphere_weak_d5.leaves").string(), "-o", prefix.string()}, s.dir);
     EXPECT_EQ(again.rc, 2);
     EXPECT_NE(again.err.find("exists"), std::string::npos) << again.err;
+    fs::remove(prefix.string() + ".pvtu");  // a piece alone is refused too, by name
+    const auto piece = run_dist(2, {shared("sphere_weak_d5.leaves").string(), "-o", prefix.string()}, s.dir);
+    EXPECT_EQ(piece.rc, 2);
+    EXPECT_NE(piece.err.find("mesh_0.vtu exists"), std::string::npos) << piece.err;
 }
 
 TEST(Distributed, BadInputIsALocatedErrorOnEveryRankCount) {

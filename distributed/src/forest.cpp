@@ -72,6 +72,7 @@ Forest::Forest(MPI_Comm comm, const LeafGrid& grid, Balance balance) {
                                     " is beyond p8est's " + std::to_string(kForestMaxLevel));
     connectivity_ = p8est_connectivity_new_unitcube();
     // Uniform at the coarsest leaf level, spread over the ranks, so the refinement is parallel.
+    // (p8est's user pointer is void*; refine_to_grid only reads the grid.)
     forest_ = p8est_new_ext(comm, connectivity_, 0, grid.min_level(), 1, sizeof(int), init_unmarked,
                             const_cast<LeafGrid*>(&grid));
     p8est_refine(forest_, 1, refine_to_grid, init_unmarked);

@@ -98,9 +98,14 @@ int run(const Options& opt, MPI_Comm comm) {
     MPI_Comm_rank(comm, &rank);
     MPI_Comm_size(comm, &size);
     int refuse = 0;  // outputs checked before any work, on rank 0, decision shared
-    if (rank == 0 && !opt.prefix.empty() && !opt.force && std::filesystem::exists(opt.prefix + ".pvtu")) {
-        std::cerr << "error: " << opt.prefix << ".pvtu exists (pass --force to replace it)\n";
-        refuse = 1;
+    if (rank == 0 && !opt.prefix.empty() && !opt.force) {
+        std::vector<std::string> outputs{opt.prefix + ".pvtu"};
+        for (int r = 0; r < size; ++r) outputs.push_back(dist::piece_path(opt.prefix, r));
+        for (const std::string& path : outputs)
+            if (!refuse && std::filesystem::exists(path)) {
+                std::cerr << "error: " << path << " exists (pass --force to replace it)\n";
+                refuse = 1;
+            }
     }
     MPI_Bcast(&refuse, 1, MPI_INT, 0, comm);
     if (refuse) return 2;
