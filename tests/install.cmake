@@ -14,3 +14,6 @@ dualhex_add_test(test_install_properties SOURCES test_install_properties.cpp DEP
 
 # bit-identical results for 1..4 threads (oneTBB task arenas): install, clipped dual, files
 dualhex_add_test(test_install_threads SOURCES test_install_threads.cpp DEPS dualhex::install dualhex::geometry)
+
+# install_leaves / leaf_context with a query: a subset of leaves with supplied contexts
+dualhex_add_test(test_install_subset SOURCES test_install_subset.cpp DEPS dualhex::install)

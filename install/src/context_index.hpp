@@ -7,6 +7,7 @@
 
 #include "dualhex/grid/cell_map.hpp"
 #include "dualhex/install/install.hpp"
+#include "dualhex/install/leaf_contexts.hpp"
 
 namespace dualhex::detail {
 
@@ -16,14 +17,15 @@ namespace dualhex::detail {
 void frame_of(const Leaf& leaf, LeafContext& ctx);
 /// Weak balance: marks the inner edges whose diagonal neighbour holds leaves two or more
 /// levels finer (leaf_contexts.cpp).
-void set_edge_two_finer(const LeafGrid& grid, const Leaf& leaf, OutsideRoot outside, LeafContext& ctx);
+void set_edge_two_finer(const SubdividedQuery& is_subdivided, const Leaf& leaf, OutsideRoot outside, LeafContext& ctx);
 
 // World neighbourhood masks per (level L, application point / 2), for every application
 // point some fine octant cube reaches (absent: all coarse).
 class ContextIndex {
 public:
     ContextIndex(const LeafGrid& grid, OutsideRoot outside)
-        : grid_(&grid), outside_(outside), masks_(grid.size() / 4 + 16) {
+        : subdivided_([g = &grid](const Leaf& cell) { return g->is_subdivided(cell); }),
+          outside_(outside), masks_(grid.size() / 4 + 16) {
         for (const Leaf& node : grid.interior_nodes()) {
             if (node.level == 0 || child_index(node) != 0) continue;
             // Leaves of level node.level see parent(node) as a fine octant cube (pairing: all
@@ -39,7 +41,7 @@ public:
         const LatticePoint& P = ctx.application_point;
         if (const std::uint64_t* m = masks_.find(Leaf{leaf.level, P.x / 2, P.y / 2, P.z / 2}))
             ctx.neighbourhood = to_local_neighbourhood(*m, ctx.direction);
-        set_edge_two_finer(*grid_, leaf, outside_, ctx);
+        set_edge_two_finer(subdivided_, leaf, outside_, ctx);
         return ctx;
     }
 
@@ -73,7 +75,7 @@ private:
                 }
     }
 
-    const LeafGrid* grid_;
+    SubdividedQuery subdivided_;
     OutsideRoot outside_;
     CellMap<std::uint64_t> masks_;
 };

@@ -58,11 +58,12 @@ struct LeafPlan {
     std::int8_t world = 0;
 };
 
-std::vector<LeafPlan> plan_leaves(const LeafGrid& grid, const TransitionRule& rule, const ElementLibrary& library,
-                                  const ContextIndex& index) {
+// context(n) is leaf n's context, describe(n) names it in an error.
+template <class Context, class Describe>
+std::vector<LeafPlan> plan_leaves(std::size_t n_leaves, const TransitionRule& rule, const ElementLibrary& library,
+                                  const Context& context, const Describe& describe) {
     std::unordered_map<std::string, int> by_name;
     for (std::size_t e = 0; e < library.elements().size(); ++e) by_name.emplace(library.elements()[e].name, static_cast<int>(e));
-    const std::size_t n_leaves = grid.size();
     std::vector<LeafPlan> plans(n_leaves);
     std::atomic<std::size_t> first_error{n_leaves};
     std::mutex error_mutex;
@@ -70,7 +71,7 @@ std::vector<LeafPlan> plan_leaves(const LeafGrid& grid, const TransitionRule& ru
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_leaves, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t n = r.begin(); n != r.end() && n < first_error.load(std::memory_order_relaxed); ++n) {
             try {
-                const LeafContext ctx = index.context(grid.leaf(n));
+                const LeafContext ctx = context(n);
                 const std::optional<Placement> placement = rule.place(ctx);
                 if (!placement) continue;
                 detail::check_placement_symmetry(*placement);
@@ -86,16 +87,16 @@ std::vector<LeafPlan> plan_leaves(const LeafGrid& grid, const TransitionRule& ru
             }
         }
     });
-    if (const std::size_t n = first_error.load(); n < n_leaves) throw InstallError("leaf " + grid.describe(n) + ": " + error, n);
+    if (const std::size_t n = first_error.load(); n < n_leaves) throw InstallError("leaf " + describe(n) + ": " + error, n);
     return plans;
 }
 
 // Step 2 and the per-leaf emission of step 3.
 class LeafEmitter {
 public:
-    LeafEmitter(const LeafGrid& grid, const ElementLibrary& library, const std::vector<LeafPlan>& plans,
-                detail::TemplateCache& cache, InstallResult& out)
-        : grid_(&grid), unit_(cache.unit()), max_level_(grid.max_level()), hex_(&cache.hex(cache.unit())) {
+    LeafEmitter(const std::vector<Leaf>& leaves, int max_level, const ElementLibrary& library,
+                const std::vector<LeafPlan>& plans, detail::TemplateCache& cache, InstallResult& out)
+        : leaves_(&leaves), unit_(cache.unit()), max_level_(max_level), hex_(&cache.hex(cache.unit())) {
         std::vector<int> first_use(library.elements().size(), -1);
         out.leaf_element.assign(plans.size(), -1);
         out.leaf_symmetry.assign(plans.size(), 0);
@@ -123,7 +124,7 @@ public:
     void emit(ComplexBuilder& builder, std::size_t n, Weld&& weld, Corner&& corner) const {
         thread_local std::vector<VertexHandle> vs, loop;
         thread_local std::vector<HalfFaceHandle> hfs;
-        const Leaf& leaf = grid_->leaf(n);
+        const Leaf& leaf = (*leaves_)[n];
         const std::int64_t s = std::int64_t{1} << (max_level_ - leaf.level);
         const std::int16_t e = (*elements_)[n];
         if (e >= 0) {
@@ -145,7 +146,7 @@ public:
 
 private:
     using ElementTemplate = detail::ElementTemplate;
-    const LeafGrid* grid_;
+    const std::vector<Leaf>* leaves_;
     std::int64_t unit_;
     int max_level_;
     const ElementTemplate* hex_;
@@ -178,12 +179,14 @@ InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const El
     if (const InstallCheck c = check_installable(grid, options.balance); !c.ok)
         throw InstallError(c.message, c.first, c.second);
     const ContextIndex index(grid, options.outside_root);
-    const std::vector<LeafPlan> plans = plan_leaves(grid, rule, library, index);
+    const std::vector<LeafPlan> plans = plan_leaves(
+        grid.size(), rule, library, [&](std::size_t n) { return index.context(grid.leaf(n)); },
+        [&](std::size_t n) { return grid.describe(n); });
     detail::TemplateCache cache(library);
     InstallResult out;
     out.unit = cache.unit();
     out.max_level = grid.max_level();
-    const LeafEmitter emitter(grid, library, plans, cache, out);
+    const LeafEmitter emitter(grid.leaves(), out.max_level, library, plans, cache, out);
     const std::size_t n_leaves = grid.size();
     const int threads = tbb::this_task_arena::max_concurrency();
     if (threads == 1) {
@@ -199,6 +202,36 @@ InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const El
             emitter.emit(builder, n, weld, corner);
         },
         out.leaf_cells);
+    return out;
+}
+
+InstallResult install_leaves(const std::vector<Leaf>& leaves, const std::vector<LeafContext>& contexts, int max_level,
+                             const TransitionRule& rule, const ElementLibrary& library) {
+    if (contexts.size() != leaves.size())
+        throw std::invalid_argument("install_leaves: " + std::to_string(contexts.size()) + " contexts for " +
+                                    std::to_string(leaves.size()) + " leaves");
+    for (const Leaf& leaf : leaves)
+        if (leaf.level > max_level) throw InstallError("leaf " + to_string(leaf) + " is finer than max_level " + std::to_string(max_level));
+    const std::vector<LeafPlan> plans = plan_leaves(
+        leaves.size(), rule, library, [&](std::size_t n) { return contexts[n]; },
+        [&](std::size_t n) { return to_string(leaves[n]); });
+    detail::TemplateCache cache(library);
+    InstallResult out;
+    out.unit = cache.unit();
+    out.max_level = max_level;
+    const LeafEmitter emitter(leaves, max_level, library, plans, cache, out);
+    // The leaves are any subset of the grid, so no dense corner array: every point is hashed.
+    ComplexBuilder builder;
+    const std::int64_t U = out.unit;
+    const auto weld = [&](const LatticePoint& p) { return builder.add_vertex(p); };
+    const auto corner = [&](std::int64_t x, std::int64_t y, std::int64_t z) { return builder.add_vertex({x * U, y * U, z * U}); };
+    out.leaf_cells.reserve(leaves.size() + 1);
+    out.leaf_cells.push_back(0);
+    for (std::size_t n = 0; n < leaves.size(); ++n) {
+        emitter.emit(builder, n, weld, corner);
+        out.leaf_cells.push_back(static_cast<std::uint32_t>(builder.n_cells()));
+    }
+    out.complex = std::move(builder).build();
     return out;
 }
 

@@ -29,7 +29,7 @@ void frame_of(const Leaf& leaf, LeafContext& ctx) {
 // it hold leaves two or more levels finer? (Pairing: a cell's children are all leaves or all
 // subdivided, so its first child tells.) Only concave edges can need it, so only they are
 // looked up.
-void set_edge_two_finer(const LeafGrid& grid, const Leaf& leaf, OutsideRoot outside, LeafContext& ctx) {
+void set_edge_two_finer(const SubdividedQuery& is_subdivided, const Leaf& leaf, OutsideRoot outside, LeafContext& ctx) {
     const std::int64_t cells = std::int64_t{1} << leaf.level;
     for (int a = 0; a < 3; ++a) {
         const int b = (a + 1) % 3, c = (a + 2) % 3;
@@ -50,7 +50,7 @@ void set_edge_two_finer(const LeafGrid& grid, const Leaf& leaf, OutsideRoot outs
             (t == 0 ? cell.i : t == 1 ? cell.j : cell.k) = x;
         }
         if (!inside && outside == OutsideRoot::Coarse) continue;
-        if (grid.is_subdivided(cell) && grid.is_subdivided(children(cell)[0])) ctx.set_two_finer_across_edge(a);
+        if (is_subdivided(cell) && is_subdivided(children(cell)[0])) ctx.set_two_finer_across_edge(a);
     }
 }
 
@@ -70,7 +70,10 @@ std::vector<LeafContext> leaf_contexts(const LeafGrid& grid, OutsideRoot outside
 }
 
 LeafContext leaf_context(const LeafGrid& grid, std::size_t n, OutsideRoot outside) {
-    const Leaf& leaf = grid.leaf(n);
+    return leaf_context(grid.leaf(n), [&grid](const Leaf& cell) { return grid.is_subdivided(cell); }, outside);
+}
+
+LeafContext leaf_context(const Leaf& leaf, const SubdividedQuery& is_subdivided, OutsideRoot outside) {
     LeafContext ctx;
     if (leaf.level == 0) return ctx;
     frame_of(leaf, ctx);
@@ -92,10 +95,10 @@ LeafContext leaf_context(const LeafGrid& grid, std::size_t n, OutsideRoot outsid
                 }
                 if (!inside && outside == OutsideRoot::Coarse) continue;
                 bool fine = true;  // covered by leaves finer than the leaf: every child subdivided
-                for (const Leaf& child : children(cube)) fine = fine && grid.is_subdivided(child);
+                for (const Leaf& child : children(cube)) fine = fine && is_subdivided(child);
                 if (fine) ctx.set_fine(i, j, k);
             }
-    set_edge_two_finer(grid, leaf, outside, ctx);
+    set_edge_two_finer(is_subdivided, leaf, outside, ctx);
     return ctx;
 }
 

@@ -74,6 +74,15 @@ struct InstallResult {
 [[nodiscard]] InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const ElementLibrary& library,
                                     const InstallOptions& options = {});
 
+/// Installs only `leaves` (any subset of a paired, balanced grid whose finest level is
+/// `max_level`), leaf n with the caller's contexts[n] (leaf_contexts.hpp: leaf_context with
+/// a SubdividedQuery), welded by lattice keys in the same lattice as install() on the
+/// whole grid. Nothing is checked about the grid (the caller holds only part of it); the
+/// rule's refusals are InstallErrors naming the leaf. The cells of a leaf are those
+/// install() gives it, in the same order.
+[[nodiscard]] InstallResult install_leaves(const std::vector<Leaf>& leaves, const std::vector<LeafContext>& contexts,
+                                           int max_level, const TransitionRule& rule, const ElementLibrary& library);
+
 /// The paired + balanced check install() applies (ok() = installable).
 struct InstallCheck {
     bool ok = true;

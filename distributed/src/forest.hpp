@@ -1,0 +1,48 @@
+#pragma once
+// The p8est forest of a leaf grid (one tree, the unit cube, no periodicity): refined to the
+// given leaves, balanced by p8est (strong = P8EST_CONNECT_FULL: faces, edges and corners;
+// weak = P8EST_CONNECT_FACE), paired by a fixed point (refine every leaf whose family is not
+// all leaves, rebalance) and partitioned with families kept on one rank. GPL-2.0-or-later
+// through p4est (distributed/README.md).
+#include <mpi.h>
+#include <p8est.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "dualhex/grid/leaf_grid.hpp"
+#include "dualhex/grid/predicates.hpp"
+
+namespace dualhex::dist {
+
+/// Finest level a p8est quadrant may have (P8EST_QMAXLEVEL); deeper leaf files are refused.
+inline constexpr int kForestMaxLevel = P8EST_QMAXLEVEL;
+
+/// Owns the connectivity and the forest.
+class Forest {
+public:
+    Forest(MPI_Comm comm, const LeafGrid& grid, Balance balance);
+    ~Forest();
+    Forest(const Forest&) = delete;
+    Forest& operator=(const Forest&) = delete;
+
+    [[nodiscard]] p8est_t* get() const { return forest_; }
+    /// The rank's leaves in Morton order.
+    [[nodiscard]] std::vector<Leaf> local_leaves() const;
+    /// Global number of leaves and the finest level over all ranks.
+    [[nodiscard]] std::int64_t global_leaves() const { return forest_->global_num_quadrants; }
+    [[nodiscard]] int global_max_level() const;
+    /// Rounds of the pairing fixed point (each: mark, refine, balance, partition).
+    [[nodiscard]] int pairing_rounds() const { return rounds_; }
+
+private:
+    p8est_connectivity_t* connectivity_ = nullptr;
+    p8est_t* forest_ = nullptr;
+    int rounds_ = 0;
+};
+
+/// A leaf as a p8est quadrant and back (tree 0).
+[[nodiscard]] p8est_quadrant_t to_quadrant(const Leaf& leaf);
+[[nodiscard]] Leaf to_leaf(const p8est_quadrant_t& q);
+
+}  // namespace dualhex::dist
