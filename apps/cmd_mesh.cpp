@@ -26,7 +26,9 @@ struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int smooth = 5;
     double feature_angle = 45.0;
-    double min_quality = 0.5, core_margin = 0.1, optimise_ms = 2000, pad_ray_limit = 2.0;
+    double min_quality = 0.5, core_margin = 0.1, optimise_ms = 0, pad_ray_limit = 2.0;
+    double optimise_work = mesher::OptimiseOptions{}.work_per_vertex;
+    double feature_min_chain = mesher::MeshPipelineOptions{}.feature_min_chain;
     bool json = false, force = false, accept_topology_change = false, no_progress = false;
     MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
@@ -60,6 +62,8 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.balance = opt.balance == "strong" ? Balance::Strong : Balance::Weak;
     options.smooth_iterations = opt.smooth;
     options.feature_angle = opt.feature_angle;
+    options.feature_min_chain = opt.feature_min_chain;
+    options.optimise.work_per_vertex = opt.optimise_work;
     options.optimise.min_quality = opt.min_quality;
     options.core.margin = opt.core_margin;
     options.optimise.time_limit_ms = opt.optimise_ms;
@@ -131,7 +135,12 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"curves_snapped", r.features.curves_snapped},
                       {"curve_vertices", r.features.curve_vertices},
                       {"patch_moves", r.features.patch_moves},
-                      {"released", r.features.released},
+                      {"min_chain", opt.feature_min_chain},
+                      {"inverted_by_snap", r.features.inverted_by_snap},
+                      {"repaired", r.features.repaired},
+                      {"curve_vertices_undone", r.features.curve_vertices_undone},
+                      {"corners_undone", r.features.corners_undone},
+                      {"vertices_restored", r.features.vertices_restored},
                       {"inverted_before", r.features.inverted_before},
                       {"inverted_after", r.features.inverted_after},
                       {"sharp_samples", r.creases.samples},
@@ -166,7 +175,11 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"quality_sweeps", r.optimise.quality_sweeps},
                       {"moves", r.optimise.moves},
                       {"reached_target", r.optimise.reached_target},
+                      {"work", r.optimise.work},
+                      {"work_budget", r.optimise.work_budget},
+                      {"hit_work_budget", r.optimise.hit_work_budget},
                       {"hit_time_limit", r.optimise.hit_time_limit}}},
+                    {"inverted_hexes", r.inverted_hexes.size()},
                     {"topology",
                      {{"manifold", t.manifold},
                       {"non_manifold_edges", t.non_manifold_edges},
@@ -222,15 +235,21 @@ void run_mesh(const MeshOptionsCli& opt) {
                     100 * q.share_negative, 100 * q.share_below_02);
         if (opt.feature_angle > 0)
             std::printf("features:         %zu/%zu corners, %zu/%zu curves snapped (%zu curve vertices, %zu moved "
-                        "to their patch); inverted %zu -> %zu; sharp-edge samples within 0.5%% of a crease: %.1f%% "
+                        "to their patch); inverted %zu -> %zu (%zu by the snap: %zu repaired, %zu corners and %zu "
+                        "curve vertices undone); sharp-edge samples within 0.5%% of a crease: %.1f%% "
                         "(%.1f%% after snapping); %zu/%zu creases spurious\n",
                         r.features.corners_snapped, r.features.corners, r.features.curves_snapped, r.features.curves,
                         r.features.curve_vertices, r.features.patch_moves, r.features.inverted_before, r.features.inverted_after,
+                        r.features.inverted_by_snap, r.features.repaired, r.features.corners_undone,
+                        r.features.curve_vertices_undone,
                         100 * r.creases.kept_share(), 100 * r.creases_snapped.kept_share(), r.creases.spurious_creases,
                         r.creases.crease_edges);
-        std::printf("optimise:         min %.4f -> %.4f, inverted %zu -> %zu (target %.2f %s)\n", r.optimise.min_before,
-                    r.optimise.min_after, r.optimise.inverted_before, r.optimise.inverted_after, opt.min_quality,
-                    r.optimise.reached_target ? "reached" : "not reached");
+        std::printf("optimise:         min %.4f -> %.4f, inverted %zu -> %zu (target %.2f %s); %zu vertex visits "
+                    "of %zu%s%s\n",
+                    r.optimise.min_before, r.optimise.min_after, r.optimise.inverted_before, r.optimise.inverted_after,
+                    opt.min_quality, r.optimise.reached_target ? "reached" : "not reached", r.optimise.work,
+                    r.optimise.work_budget, r.optimise.hit_work_budget ? " (budget spent)" : "",
+                    r.optimise.hit_time_limit ? " (STOPPED by --optimise-ms: machine-dependent)" : "");
         std::printf("topology:         %s; %zu boundary components (input %zu)%s\n",
                     t.manifold ? "manifold" : "NOT manifold", t.components(), t.input_components(),
                     t.matches ? ", matches the input" : ", DIFFERS from the input");
@@ -246,6 +265,18 @@ void run_mesh(const MeshOptionsCli& opt) {
                     r.ms.octree, r.ms.balance_pair, r.ms.install, r.ms.verify, r.ms.dual, r.ms.core, r.ms.pad,
                     r.ms.features, r.ms.smooth, r.ms.optimise, r.ms.check, r.ms.report, r.ms.write);
         std::printf("wrote %s\n", opt.output.c_str());
+    }
+    if (!r.inverted_hexes.empty()) {  // no flag accepts this: an inverted hex is never a success
+        std::cerr << "error: " << input_name << ": " << r.inverted_hexes.size() << " inverted or flat hex(es) (scaled Jacobian <= "
+                  << mesher::kFlatScaledJacobian << ")";
+        for (std::size_t i = 0; i < std::min<std::size_t>(5, r.inverted_hexes.size()); ++i) {
+            const std::size_t h = r.inverted_hexes[i];
+            Eigen::Vector3d c = Eigen::Vector3d::Zero();
+            for (int v : r.mesh.hexes[h]) c += r.mesh.points[static_cast<std::size_t>(v)] / 8.0;
+            std::cerr << (i ? "; " : ": ") << "hex " << h << " at (" << c.x() << ", " << c.y() << ", " << c.z() << ")";
+        }
+        std::cerr << (r.inverted_hexes.size() > 5 ? "; ..." : "") << " (the mesh is written, to look at)\n";
+        throw Exit{kCheckFailed};
     }
     if (!t.matches && !opt.accept_topology_change) {
         std::cerr << "error: " << input_name << ": the mesh's boundary topology differs from the input's";
@@ -281,8 +312,18 @@ void register_mesh(CLI::App& app) {
     sub->add_option("--core-margin", opt->core_margin,
                     "Core hexes have all corners at least this times their mean edge inside the surface (default 0.1)")
         ->check(CLI::Range(0.0, 2.0));
-    sub->add_option("--optimise-ms", opt->optimise_ms, "CPU-time bound of the optimiser in ms, checked between sweeps (default 2000; 0: none, only the sweep bounds, so the mesh does not depend on the machine's load, but large meshes can take minutes)")
+    sub->add_option("--optimise-work", opt->optimise_work,
+                    "Optimiser work budget: vertex visits per mesh vertex (default 100; 0: only the sweep bounds). "
+                    "Counted, not timed: the same input gives the same mesh on any machine")
+        ->check(CLI::Range(0.0, 1e6));
+    sub->add_option("--optimise-ms", opt->optimise_ms,
+                    "Opt-in wall-clock safety bound of the optimiser in ms (default 0: none). When it stops the "
+                    "optimiser the mesh depends on the machine's speed and load (optimise.hit_time_limit)")
         ->check(CLI::Range(0.0, 1e7));
+    sub->add_option("--feature-min-chain", opt->feature_min_chain,
+                    "Chains of sharp input edges shorter than this fraction of the bbox diagonal are not features "
+                    "(default 0.1; 0: every sharp edge; keeps tessellation creases of organic models off)")
+        ->check(CLI::Range(0.0, 10.0));
     sub->add_option("--pad-ray-limit", opt->pad_ray_limit,
                     "Pad: an outer vertex is the normal ray's hit if it is within this times (distance + edge), else "
                     "the closest point (default 2; 0: always the closest point)")

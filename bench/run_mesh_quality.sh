@@ -1,12 +1,14 @@
 #!/bin/sh
-# Independent mesh-quality baseline (issue 12): meshes every shared surface with
-# `dualhex mesh` (default settings = max depth 6, and max depth 7; VTK into a temporary
-# directory) and measures each result with bench/mesh_quality (its own VTK reader,
+# Independent mesh-quality benchmark (issue 12): meshes every shared surface with
+# `dualhex mesh --preset P` (VTK into a temporary directory; extra `dualhex mesh` options
+# from $MESH_OPTS) and measures each result with bench/mesh_quality (its own VTK reader,
 # scaled Jacobian, topology and two-sided distance), then the four HybridOctree reference
 # meshes (Tong et al. 2024) against the same gao_* surfaces, side by side. Those are in
 # another frame (scaled ~100): measured with --fit (marked '*'; see mesh_quality.cpp).
-# Builds dualhex and mesh_quality in the root build (Release, build/ unless BUILD_DIR).
-# Not part of the test suite.   bench/run_mesh_quality.sh [depth ...]  (default: 6 7)
+# After each row: `dualhex mesh`'s exit code and its CPU seconds (user + sys, all threads).
+# Builds dualhex and mesh_quality in the root build (Release, build/ unless
+# BUILD_DIR). Not part of the test suite.
+#   bench/run_mesh_quality.sh [preset ...]  (coarse, medium, fine; default: medium)
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 build="${BUILD_DIR:-$here/../build}"
@@ -15,7 +17,7 @@ cmake -S "$here/.." -B "$build" -DCMAKE_BUILD_TYPE=Release -DDUALHEX_BUILD_BENCH
 cmake --build "$build" -j2 --target dualhex mesh_quality >/dev/null
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-if [ $# -eq 0 ]; then set -- 6 7; fi
+if [ $# -eq 0 ]; then set -- medium; fi
 echo "machine: $(uname -n), $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg); date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
 echo "commit:  $(git -C "$here/.." rev-parse --short HEAD 2>/dev/null || echo unknown)"
 "$build/bench/mesh_quality" --header
@@ -23,15 +25,20 @@ measure() {  # mesh surface name [--fit]
   if [ "${4:-}" = "--fit" ]; then set -- --fit "$1" "$2" "$3"; fi
   "$build/bench/mesh_quality" "$@" 2>&1 || echo "$3 measurement failed"
 }
-for depth in "$@"; do
+for preset in "$@"; do
   for f in "$data"/surfaces/*; do
     name=$(basename "${f%.*}")
-    out="$tmp/${name}_d$depth.vtk"
-    if ! "$build/apps/dualhex" mesh "$f" -o "$out" --max-depth "$depth" >"$tmp/log" 2>&1; then
-      echo "$name d$depth: dualhex mesh failed: $(tail -1 "$tmp/log")"
+    out="$tmp/${name}_$preset.vtk"
+    rc=0
+    # shellcheck disable=SC2086  # MESH_OPTS is a list of options
+    /usr/bin/time -f "%U %S" -o "$tmp/time" "$build/apps/dualhex" mesh "$f" -o "$out" --preset "$preset" \
+      ${MESH_OPTS:-} >"$tmp/log" 2>&1 || rc=$?
+    if [ ! -f "$out" ]; then
+      echo "$name $preset: dualhex mesh failed (exit $rc): $(tail -1 "$tmp/log")"
       continue
     fi
-    measure "$out" "$f" "${name}_d$depth"
+    measure "$out" "$f" "${name}_$preset"
+    echo "  exit $rc, cpu $(tail -1 "$tmp/time" | awk "{printf \"%.2f s\", \$1 + \$2}")"
   done
 done
 for f in "$data"/hex/hybridoctree_tong2024/*.vtk; do

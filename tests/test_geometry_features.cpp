@@ -1,5 +1,6 @@
 // Feature detection (geometry/feature_curves.hpp): the cube's 12 edges and 8 corners, no
 // feature on a smooth icosphere, curves split at corners, closed loops, the turn rule,
+// short chains dropped whole (min_chain_length),
 // bad input refused, and the polyline helpers.
 #include <gtest/gtest.h>
 
@@ -173,6 +174,32 @@ TEST(GeometryFeatures, TurnAngleMakesCorners) {
     FeatureOptions low;
     low.angle_degrees = 10;
     EXPECT_EQ(detect_features(ngon_prism(24), low).edges.size(), 72u);
+}
+
+TEST(GeometryFeatures, ChainsShorterThanTheMinimumAreDroppedWhole) {
+    // the unit cube (one chain of 12 edges, length 12) and a cube of edge 0.1 beside it
+    // (length 1.2): a minimum of 5 keeps the big cube's every edge and none of the small's
+    TriangleSurface s = unit_cube_surface();
+    const TriangleSurface small = unit_cube_surface();
+    const int offset = static_cast<int>(s.vertices.size());
+    for (const auto& v : small.vertices) s.vertices.push_back(0.1 * v + Eigen::Vector3d(3, 0, 0));
+    for (const auto& t : small.triangles) s.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    EXPECT_EQ(detect_features(s).curves.size(), 24u);
+    FeatureOptions options;
+    options.min_chain_length = 5;
+    const FeatureSet f = detect_features(s, options);
+    EXPECT_EQ(f.edges.size(), 12u);
+    EXPECT_EQ(f.corners.size(), 8u);
+    EXPECT_EQ(f.curves.size(), 12u);
+    for (const auto& e : f.edges) EXPECT_LT(e[1], offset);
+    EXPECT_EQ(f.patches, 7);  // the big cube's 6 faces, the small cube one patch
+    options.min_chain_length = 12.5;  // above the big cube's chain too: no features at all
+    const FeatureSet none = detect_features(s, options);
+    EXPECT_TRUE(none.edges.empty());
+    EXPECT_TRUE(none.curves.empty());
+    EXPECT_EQ(none.patches, 2);
+    options.min_chain_length = -1;
+    EXPECT_THROW((void)detect_features(s, options), std::invalid_argument);
 }
 
 TEST(GeometryFeatures, RefusesBadInput) {

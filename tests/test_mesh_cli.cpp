@@ -1,7 +1,8 @@
 // `dualhex mesh` run as a process (DUALHEX_EXE): the default shape meshes and reports
 // the --json keys, an existing output is refused without --force (exit 2), a bad or
 // missing surface exits 3 naming the file, an unknown output extension exits 2,
-// --feature-angle keeps the cube's edges (0: off) and refuses angles outside [0, 179].
+// --feature-angle keeps the cube's edges (0: off) and refuses angles outside [0, 179], an
+// inverted hex exits 1 whatever the flags.
 #include <gtest/gtest.h>
 
 #include "run_process.hpp"
@@ -158,4 +159,29 @@ TEST_F(MeshCli, FeatureAngleOption) {
     EXPECT_EQ(nlohmann::json::parse(off.out).at("features").at("curves").get<int>(), 0);
     EXPECT_EQ(run({"mesh", cube, "-o", (dir_ / "bad.vtk").string(), "--feature-angle", "180"}).rc, 2);
     EXPECT_EQ(run({"mesh", cube, "-o", (dir_ / "bad.vtk").string(), "--feature-angle", "-5"}).rc, 2);
+}
+
+// An inverted hex is never a success: with the optimiser starved (one visit) and no
+// smoothing, the torus at depth 4 keeps the pad's inverted hexes and exits 1 naming them
+// (the mesh is written; no flag accepts it); with the default budget it exits 0. The
+// budget and the wall-clock bound are reported.
+TEST_F(MeshCli, InvertedHexesExit1AndTheBudgetIsReported) {
+    const std::string out = (dir_ / "tangled.vtk").string();
+    const Result bad = run({"mesh", "-o", out, "--max-depth", "4", "--smooth", "0", "--optimise-work", "0.000001",
+                            "--accept-topology-change", "--json"});
+    ASSERT_EQ(bad.rc, 1) << bad.err;
+    EXPECT_NE(bad.err.find("inverted or flat hex"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("hex 98 at ("), std::string::npos) << bad.err;  // located
+    EXPECT_NE(bad.err.find("<default torus>"), std::string::npos) << bad.err;
+    const auto j = nlohmann::json::parse(bad.out);
+    EXPECT_GT(j.at("inverted_hexes").get<int>(), 0);
+    EXPECT_TRUE(j.at("optimise").at("hit_work_budget").get<bool>());
+    EXPECT_FALSE(j.at("optimise").at("hit_time_limit").get<bool>());
+    EXPECT_TRUE(fs::exists(out));
+    const Result good = run({"mesh", "-o", out, "--max-depth", "4", "--force", "--json"});
+    ASSERT_EQ(good.rc, 0) << good.err;
+    const auto g = nlohmann::json::parse(good.out);
+    EXPECT_EQ(g.at("inverted_hexes").get<int>(), 0);
+    EXPECT_LE(g.at("optimise").at("work").get<long>(), g.at("optimise").at("work_budget").get<long>());
+    EXPECT_EQ(run({"mesh", "-o", out, "--force", "--optimise-work", "-1"}).rc, 2);
 }

@@ -138,12 +138,14 @@ TEST(MesherFeatures, CubeKeepsEdgesCornersAndVolume) {
 }
 
 TEST(MesherFeatures, CadModelsKeepTheirSharpEdges) {
-    // the features stage's own result (before smoothing and untangling): >= 95% of the
-    // sharp-edge samples within 0.5% of the diagonal of a crease (README: 100% and 97.0%)
+    // the features stage's own result (before smoothing and untangling): >= 90% of the
+    // sharp-edge samples within 0.5% of the diagonal of a crease. It was 95% before the
+    // stage gave up snapped vertices on hexes it inverted and could not repair
+    // (feature_refusal.hpp: validity before creases; tue_B0 at depth 6 keeps 90.5%).
     for (const char* name : {"tue_B0.stl", "cgal_fandisk.off"}) {
         const TriangleSurface s = read_surface(std::string(DUALHEX_SHARED_DATA) + "/surfaces/" + name);
         const MeshPipelineResult r = run_pipeline(s, 6, 45);
-        EXPECT_GE(r.creases_snapped.kept_share(), 0.95) << name;
+        EXPECT_GE(r.creases_snapped.kept_share(), 0.90) << name;
         EXPECT_EQ(r.features.corners_snapped, r.features.corners) << name;
         EXPECT_GE(r.features.curves_snapped + 2, r.features.curves) << name;
         EXPECT_GT(r.creases.kept_share(), 0.8) << name;  // the output, after untangle and restore

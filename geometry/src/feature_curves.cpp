@@ -37,10 +37,17 @@ std::vector<Eigen::Vector3d> triangle_normals(const TriangleSurface& s) {
     return normals;
 }
 
+// A feature edge and the two triangles it separates.
+struct SharpEdge {
+    std::array<int, 2> edge;
+    std::array<int, 2> triangles;
+    bool operator<(const SharpEdge& o) const { return edge < o.edge; }
+};
+
 // Feature edges: the two triangles' normals deviate by more than the angle; `smooth`
 // receives the triangle pairs across the other edges.
-std::vector<std::array<int, 2>> feature_edges(const TriangleSurface& s, double angle_degrees,
-                                              std::vector<std::array<int, 2>>& smooth) {
+std::vector<SharpEdge> feature_edges(const TriangleSurface& s, double angle_degrees,
+                                     std::vector<std::array<int, 2>>& smooth) {
     const std::vector<Eigen::Vector3d> normals = triangle_normals(s);
     std::unordered_map<std::uint64_t, std::array<int, 3>> uses;  // key -> count, first, second triangle
     uses.reserve(3 * s.triangles.size());
@@ -52,7 +59,7 @@ std::vector<std::array<int, 2>> feature_edges(const TriangleSurface& s, double a
             ++u[0];
         }
     const double cos_max = degrees_to_cos(angle_degrees);
-    std::vector<std::array<int, 2>> edges;
+    std::vector<SharpEdge> edges;
     for (const auto& [key, u] : uses) {
         const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
         if (u[0] != 2)
@@ -61,12 +68,41 @@ std::vector<std::array<int, 2>> feature_edges(const TriangleSurface& s, double a
         const Eigen::Vector3d& n1 = normals[static_cast<std::size_t>(u[1])];
         const Eigen::Vector3d& n2 = normals[static_cast<std::size_t>(u[2])];
         if (!n1.isZero() && !n2.isZero() && n1.dot(n2) < cos_max)
-            edges.push_back({a, b});
+            edges.push_back({{a, b}, {u[1], u[2]}});
         else
             smooth.push_back({u[1], u[2]});
     }
     std::sort(edges.begin(), edges.end());
     return edges;
+}
+
+// Drops the feature edges of every chain (connected component of feature edges, corners
+// not splitting it) shorter than `min_length` in total; their triangle pairs join `smooth`.
+// Why whole chains: on CAD models a short curve between two corners belongs to a long
+// network of creases and is kept, while the creases of an organic model's tessellation are
+// short isolated chains (cgal_armadillo: 355 chains, the longest 7.5% of the diagonal).
+std::vector<SharpEdge> drop_short_chains(const TriangleSurface& s, std::vector<SharpEdge> edges, double min_length,
+                                         std::vector<std::array<int, 2>>& smooth) {
+    if (!(min_length > 0)) return edges;
+    std::vector<int> parent(s.vertices.size());
+    for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
+    auto find = [&](int v) {
+        while (parent[static_cast<std::size_t>(v)] != v)
+            v = parent[static_cast<std::size_t>(v)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(v)])];
+        return v;
+    };
+    for (const SharpEdge& e : edges) parent[static_cast<std::size_t>(find(e.edge[0]))] = find(e.edge[1]);
+    std::unordered_map<int, double> length;  // chain root -> total length
+    for (const SharpEdge& e : edges)
+        length[find(e.edge[0])] += (s.vertices[static_cast<std::size_t>(e.edge[0])] -
+                                    s.vertices[static_cast<std::size_t>(e.edge[1])]).norm();
+    std::vector<SharpEdge> kept;
+    for (const SharpEdge& e : edges)
+        if (length.at(find(e.edge[0])) >= min_length)
+            kept.push_back(e);
+        else
+            smooth.push_back(e.triangles);
+    return kept;
 }
 
 // Patch id per triangle: the components of the triangles joined across `smooth` pairs,
@@ -166,9 +202,13 @@ FeatureSet detect_features(const TriangleSurface& surface, const FeatureOptions&
     if (!(options.turn_degrees > 0 && options.turn_degrees < 180))
         throw std::invalid_argument("corner turn angle must be in (0, 180) degrees, got " +
                                     std::to_string(options.turn_degrees));
+    if (!(options.min_chain_length >= 0))
+        throw std::invalid_argument("feature chain length must be >= 0, got " + std::to_string(options.min_chain_length));
     FeatureSet out;
     std::vector<std::array<int, 2>> smooth;
-    out.edges = feature_edges(surface, options.angle_degrees, smooth);
+    for (const SharpEdge& e : drop_short_chains(surface, feature_edges(surface, options.angle_degrees, smooth),
+                                                options.min_chain_length, smooth))
+        out.edges.push_back(e.edge);
     out.patch = patches(surface.triangles.size(), smooth, out.patches);
     FeatureGraph g;
     g.edges = &out.edges;

@@ -12,6 +12,7 @@
 #include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/mesher/cell_levels.hpp"
 #include "dualhex/mesher/feature_patches.hpp"
+#include "dualhex/mesher/feature_refusal.hpp"
 #include "dualhex/mesher/install_stage.hpp"
 #include "dualhex/mesher/select_core.hpp"
 #include "dualhex/mesher/smooth.hpp"
@@ -49,6 +50,7 @@ void check_options(const MeshPipelineOptions& options) {
     if (options.smooth_iterations < 0) throw std::invalid_argument("smoothing iterations must be >= 0");
     if (!(options.feature_angle >= 0 && options.feature_angle < 180))
         throw std::invalid_argument("feature angle must be 0 (off) or in (0, 180) degrees");
+    if (!(options.feature_min_chain >= 0)) throw std::invalid_argument("feature chain length must be >= 0");
 }
 
 // The feature curves as the moving stages take them: closed iff the first point is
@@ -114,22 +116,6 @@ void smooth_stage(MeshPipelineResult& result, const VertexDomain& domain, int it
     result.smooth_iterations_done = smooth_interior(result.mesh, fixed, iterations, state);
 }
 
-// Curve and Corner vertices of inverted hexes become Surface vertices; returns how many.
-std::size_t release_features_at_inverted(const HexMesh& mesh, const QualityState& state, VertexConstraints& constraints) {
-    std::size_t released = 0;
-    for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-        if (state.scaled_jacobian[h] > 0) continue;
-        for (int v : mesh.hexes[h]) {
-            VertexRole& role = constraints.role[static_cast<std::size_t>(v)];
-            if (role != VertexRole::Curve && role != VertexRole::Corner) continue;
-            role = VertexRole::Surface;
-            constraints.curve[static_cast<std::size_t>(v)] = -1;
-            ++released;
-        }
-    }
-    return released;
-}
-
 }  // namespace
 
 MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions& options) {
@@ -182,42 +168,39 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     result.cell_data.level = padded_levels(result.mesh, result.core_hexes, core_levels);
 
     geometry::FeatureSet features;
+    FeatureCurves curves;
     HexMesh snapped;  // the mesh as the features stage left it, measured in the report
     timed(options, "features", ms.features, [&] {
         if (options.feature_angle <= 0) return;
         geometry::FeatureOptions feature_options;
         feature_options.angle_degrees = options.feature_angle;
+        feature_options.min_chain_length = options.feature_min_chain * tree.bounds().diagonal().norm();
         features = geometry::detect_features(tree.surface(), feature_options);
+        curves = moving_stage_curves(features);
+        const std::vector<Eigen::Vector3d> before = result.mesh.points;
+        const std::vector<double> sj_before = state.scaled_jacobian;
         result.features = snap_features(result.mesh, features, result.constraints);
         result.features.patch_moves =
             project_to_patches(result.mesh, tree, features, result.constraints, result.features.path_edges);
         state = quality_state(result.mesh);
+        // The stage hands on no hex it inverted: repaired around the snap, or the snap undone.
+        refuse_inverting_snaps(result.mesh, before, sj_before, result.constraints, result.features, tree, curves,
+                               state);
         result.features.inverted_after = state.inverted;
         snapped.points = result.mesh.points;
     });
-    const FeatureCurves curves = moving_stage_curves(features);
     const VertexDomain domain{tree, curves, result.constraints};
     timed(options, "smooth", ms.smooth, [&] { smooth_stage(result, domain, options.smooth_iterations, state); });
     HexMesh& mesh = result.mesh;
     result.optimise = timed(options, "optimise", ms.optimise, [&] {
-        OptimiseResult r = optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
-        // A snapped feature the optimiser cannot untangle around (organic models have
-        // tessellation "features") is given up: its vertices on inverted hexes become plain
-        // surface vertices and the optimiser runs again. Validity before creases.
-        if (r.inverted_after > 0 && (result.features.released = release_features_at_inverted(mesh, state,
-                                                                                                result.constraints)) > 0) {
-            const OptimiseResult again = optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
-            r.inverted_after = again.inverted_after;
-            r.min_after = again.min_after;
-            r.untangle_sweeps += again.untangle_sweeps;
-            r.quality_sweeps += again.quality_sweeps;
-            r.moves += again.moves;
-            r.reached_target = again.reached_target;
-            r.hit_time_limit = r.hit_time_limit || again.hit_time_limit;
-        }
-        return r;
+        return optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
     });
-    result.topology = timed(options, "check", ms.check, [&] { return check_topology(mesh, tree.surface()); });
+    result.topology = timed(options, "check", ms.check, [&] {
+        result.inverted_hexes.clear();  // never success for an inverted mesh
+        for (std::size_t h = 0; h < state.scaled_jacobian.size(); ++h)
+            if (!(state.scaled_jacobian[h] > kFlatScaledJacobian)) result.inverted_hexes.push_back(h);
+        return check_topology(mesh, tree.surface());
+    });
 
     timed(options, "report", ms.report, [&] {
         result.quality = geometry::summarize(state.scaled_jacobian);

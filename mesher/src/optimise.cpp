@@ -1,10 +1,10 @@
 // The optimise stage (optimise.hpp): the driver and phase 1, the foldover-free untangler.
 #include "dualhex/mesher/optimise.hpp"
 
-#include <limits>
-
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include <Eigen/Cholesky>
 
@@ -147,8 +147,11 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
     constexpr int kStallSweeps = 25, kMaxRings = 4;
     std::size_t best_inverted = count_inverted(c.sj);
     int best_sweep = 0, sweep = 0;
-    while (sweep < max_sweeps && !c.out_of_time()) {
-        for (std::size_t v : vertices) (void)energy_step(c, energy, v);
+    while (sweep < max_sweeps && !c.stopped()) {
+        for (std::size_t v : vertices) {
+            if (!c.take_visit()) break;
+            (void)energy_step(c, energy, v);
+        }
         ++sweep;
         const double e = totals(min_det);
         const std::size_t inverted = count_inverted(c.sj);
@@ -176,6 +179,30 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
 
 }  // namespace detail
 
+namespace {
+
+// Phase 1 from the current state, kept only under the contract (never more inverted, never
+// a lower minimum than at its start: else the points are restored); returns its sweeps.
+int untangle_kept(detail::OptimiseContext& c, detail::BarrierEnergy& energy, int max_sweeps, QualityState& state,
+                  bool& kept) {
+    const std::vector<Eigen::Vector3d> before = c.mesh.points;
+    const std::vector<double> sj_before = state.scaled_jacobian;
+    const std::size_t inverted_before = state.inverted;
+    const double min_before = geometry::summarize(sj_before).min;
+    const int sweeps = detail::untangle_phase(c, energy, max_sweeps);
+    const std::size_t inverted = count_inverted(state.scaled_jacobian);
+    kept = inverted <= inverted_before && geometry::summarize(state.scaled_jacobian).min >= min_before;
+    if (kept) {
+        state.inverted = inverted;
+    } else {
+        c.mesh.points = before;
+        state.scaled_jacobian = sj_before;
+    }
+    return sweeps;
+}
+
+}  // namespace
+
 OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& constraints, const geometry::AabbTree& tree,
                              const FeatureCurves& curves, const OptimiseOptions& options, QualityState& state) {
     check_constraints(constraints, mesh.points.size(), curves);
@@ -185,37 +212,62 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
     const VertexDomain domain{tree, curves, constraints};
     const detail::VertexHexes incidence(mesh);
     detail::BarrierEnergy energy(mesh);
-    const std::clock_t start = std::clock();
-    // No time limit (0, the default): the sweep bounds alone stop it, so the result does not
-    // depend on the machine's load. A limit bounds the time and makes it load-dependent.
-    const auto budget = options.time_limit_ms > 0
-                            ? static_cast<std::clock_t>(std::min(options.time_limit_ms, 1e9) * 1e-3 * CLOCKS_PER_SEC)
-                            : std::numeric_limits<std::clock_t>::max() / 4;
-    // Phase 1 gets at most half the budget, so phase 2 always has time.
-    detail::OptimiseContext c{mesh, domain, incidence, state.scaled_jacobian, start + budget / 2};
-    if (state.inverted > 0) {
-        const std::vector<Eigen::Vector3d> before = mesh.points;
-        const std::vector<double> sj_before = state.scaled_jacobian;
-        r.untangle_sweeps = detail::untangle_phase(c, energy, options.untangle_sweeps);
-        const std::size_t inverted = count_inverted(state.scaled_jacobian);
-        const double min = geometry::summarize(state.scaled_jacobian).min;
-        r.untangle_kept = inverted <= r.inverted_before && min >= r.min_before;  // the contract, both ways
-        if (r.untangle_kept) {
-            state.inverted = inverted;
-        } else {
-            mesh.points = before;
-            state.scaled_jacobian = sj_before;
-        }
+    const double visits = options.work_per_vertex * static_cast<double>(mesh.points.size());
+    r.work_budget = options.work_per_vertex > 0 ? static_cast<std::size_t>(std::max(1.0, std::min(visits, 1e18))) : 0;
+    const std::size_t budget = r.work_budget > 0 ? r.work_budget : std::numeric_limits<std::size_t>::max();
+    detail::OptimiseContext c{mesh, domain, incidence, state.scaled_jacobian, 0};
+    if (options.time_limit_ms > 0) {
+        c.timed = true;
+        c.deadline = std::chrono::steady_clock::now() +
+                     std::chrono::microseconds(static_cast<std::int64_t>(std::min(options.time_limit_ms, 1e9) * 1e3));
     }
-    energy.eps = 1e-3;
-    r.hit_time_limit = c.out_of_time();
-    c.deadline = start + budget;
-    r.moves = detail::quality_phase(c, energy, options.min_quality, options.quality_sweeps, r.quality_sweeps);
-    state.inverted = count_inverted(state.scaled_jacobian);
+    // Rounds of untangling then quality moves: the quality phase often frees what the
+    // untangler stalled on (thin pad hexes on concave spots), so while hexes stay inverted
+    // and a round removed some, another follows. Each phase of a round with inverted hexes
+    // gets at most half of what is left of the budget, so the next always has some.
+    constexpr int kRounds = 4;
+    for (int round = 0; round < kRounds && !c.hit_time; ++round) {
+        const std::size_t inverted_at_start = state.inverted;
+        auto half_of_rest = [&] { return budget == std::numeric_limits<std::size_t>::max() ? budget
+                                                                                          : c.work + (budget - c.work + 1) / 2; };
+        if (state.inverted > 0) {
+            c.work_limit = half_of_rest();
+            bool kept = false;
+            r.untangle_sweeps += untangle_kept(c, energy, options.untangle_sweeps, state, kept);
+            r.untangle_kept = r.untangle_kept || kept;
+        }
+        energy.eps = 1e-3;
+        c.hit_budget = false;  // a phase's share spent is not the budget spent
+        c.work_limit = state.inverted > 0 && round + 1 < kRounds ? half_of_rest() : budget;
+        int sweeps = 0;
+        r.moves += detail::quality_phase(c, energy, options.min_quality, options.quality_sweeps, sweeps);
+        r.quality_sweeps += sweeps;
+        state.inverted = count_inverted(state.scaled_jacobian);
+        if (state.inverted == 0 || state.inverted >= inverted_at_start || c.work >= budget) break;
+    }
+    r.work = c.work;
+    // Each rescue has its own budget (work_per_vertex per region vertex), and runs only while
+    // the main budget is not spent, so a starved run stays starved.
+    for (int rescue = 0; rescue < options.rescue_rounds && state.inverted > 0 && !c.hit_time && c.work < budget;
+         ++rescue) {
+        std::vector<std::size_t> inverted;
+        for (std::size_t h = 0; h < state.scaled_jacobian.size(); ++h)
+            if (!(state.scaled_jacobian[h] > 0)) inverted.push_back(h);
+        OptimiseOptions local = options;
+        local.rescue_rounds = 0;
+        local.time_limit_ms = c.timed ? std::max(1e-3, std::chrono::duration<double, std::milli>(
+                                                            c.deadline - std::chrono::steady_clock::now()).count())
+                                      : 0;
+        const OptimiseResult lr = optimise_region(mesh, inverted, 2 + rescue, constraints, tree, curves, local);
+        r.work += lr.work;
+        r.hit_time_limit = r.hit_time_limit || lr.hit_time_limit;
+        state = quality_state(mesh);  // the region's contract keeps the whole mesh's
+    }
     r.inverted_after = state.inverted;
     r.min_after = geometry::summarize(state.scaled_jacobian).min;
     r.reached_target = r.min_after >= options.min_quality;
-    r.hit_time_limit = r.hit_time_limit || c.out_of_time();
+    r.hit_work_budget = c.work >= budget;
+    r.hit_time_limit = r.hit_time_limit || c.hit_time;
     return r;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the optimise stage: what its two phases share.
-#include <ctime>
+#include <chrono>
 #include <cstddef>
 #include <vector>
 
@@ -15,9 +15,21 @@ struct OptimiseContext {
     const VertexDomain& domain;
     const VertexHexes& incidence;
     std::vector<double>& sj;  ///< (hexes) kept current by every accepted move
-    std::clock_t deadline;  ///< process CPU time (the stage is single-threaded; fair on a loaded machine)
+    std::size_t work_limit;   ///< vertex visits allowed so far (the current phase's share)
+    std::size_t work = 0;     ///< vertex visits done
+    bool timed = false;       ///< the opt-in wall-clock bound is on
+    std::chrono::steady_clock::time_point deadline{};
+    bool hit_budget = false, hit_time = false;
 
-    [[nodiscard]] bool out_of_time() const { return std::clock() > deadline; }
+    /// Takes one vertex visit from the budget; false (and nothing taken) if it is spent or
+    /// the wall-clock bound passed. Counting visits, not time, keeps the output deterministic.
+    [[nodiscard]] bool take_visit() {
+        if (work >= work_limit) return !(hit_budget = true);
+        if (timed && std::chrono::steady_clock::now() > deadline) return !(hit_time = true);
+        ++work;
+        return true;
+    }
+    [[nodiscard]] bool stopped() const { return hit_budget || hit_time; }
 };
 
 /// Of the hexes at v, with v at x: how many are inverted (SJ <= 0 or NaN), their minimum SJ.

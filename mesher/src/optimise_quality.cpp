@@ -72,7 +72,7 @@ std::size_t quality_phase(OptimiseContext& c, BarrierEnergy& energy, double targ
     constexpr int kStallSweeps = 10;  // sweeps without a better global minimum before stopping
     double best_min = -INFINITY;
     int best_sweep = 0;
-    while (sweeps < max_sweeps && !c.out_of_time()) {
+    while (sweeps < max_sweeps && !c.stopped()) {
         // The movable vertices of the hexes below target, worst hex first.
         std::vector<std::pair<double, std::size_t>> order;
         std::vector<char> seen(c.mesh.points.size(), 0);
@@ -88,6 +88,7 @@ std::size_t quality_phase(OptimiseContext& c, BarrierEnergy& energy, double targ
             for (int w : c.mesh.hexes[h]) {
                 const auto v = static_cast<std::size_t>(w);
                 if (seen[v] || !dirty[v] || c.domain.role(v) == VertexRole::Corner) continue;
+                if (!c.take_visit()) break;
                 seen[v] = 1;
                 dirty[v] = 0;
                 if (!improve_vertex(c, energy, v)) continue;

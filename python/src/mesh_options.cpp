@@ -72,6 +72,8 @@ const std::vector<OptionBinding>& options_table() {
         field("max_leaves", &Options::max_leaves),
         field("feature_angle", &Options::feature_angle),
         nested_field("min_quality", &Options::optimise, &mesher::OptimiseOptions::min_quality),
+        nested_field("optimise_work", &Options::optimise, &mesher::OptimiseOptions::work_per_vertex),
+        field("feature_min_chain", &Options::feature_min_chain),
     };
     return table;
 }

@@ -3,6 +3,7 @@
 #include "dualhex/mesher/default_shape.hpp"
 #include "dualhex/mesher/extract.hpp"
 #include "dualhex/mesher/feature_patches.hpp"
+#include "dualhex/mesher/feature_refusal.hpp"
 #include "dualhex/mesher/feature_report.hpp"
 #include "dualhex/mesher/feature_restore.hpp"
 #include "dualhex/mesher/features.hpp"

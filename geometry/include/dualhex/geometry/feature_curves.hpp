@@ -16,7 +16,8 @@
 // undefined. A vertex is a corner iff it has 1 or >= 3 feature edges, or 2 whose
 // directions turn by more than `turn_degrees` there (a sharp bend along one curve).
 // Curves are the chains of feature edges split at corners; a chain without corners is a
-// closed curve. All combinatorics are by vertex id; floats only decide the two angles.
+// closed curve. With `min_chain_length`, the feature edges of chains shorter than it are
+// dropped first (smooth, so patches join across them). All combinatorics are by vertex id; floats only decide the two angles.
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -34,6 +35,11 @@ struct FeatureOptions {
     double angle_degrees = 45.0;
     /// Turn of the curve direction at a 2-edge vertex above which it is a corner.
     double turn_degrees = 45.0;
+    /// Chains of feature edges (connected, corners included) shorter than this in total
+    /// (model units) are not features: their edges count as smooth. 0 (default): all kept.
+    /// The mesher sets it from the bbox diagonal, so tessellation creases of organic models
+    /// (short isolated chains) are not snapped.
+    double min_chain_length = 0.0;
 };
 
 struct FeatureCurve {

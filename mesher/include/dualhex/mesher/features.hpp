@@ -58,8 +58,11 @@ struct FeatureSnapReport {
     double max_move = 0;                         ///< largest vertex displacement (absolute)
     std::vector<PathEdge> path_edges;            ///< the snapped paths' boundary edges
     std::size_t patch_moves = 0;                 ///< left 0 here; the pipeline: project_to_patches' count
-    std::size_t released = 0;                    ///< left 0 here; the pipeline: snapped vertices given up
-                                                 ///< where the optimiser left a hex inverted
+    /// Left 0 here; refuse_inverting_snaps (feature_refusal.hpp) fills them: hexes the snap
+    /// inverted, how many of them its repair untangled, corner and curve vertices given up,
+    /// points put back.
+    std::size_t inverted_by_snap = 0, repaired = 0;
+    std::size_t corners_undone = 0, curve_vertices_undone = 0, vertices_restored = 0;
 };
 
 /// Throws std::invalid_argument if constraints are neither empty nor of the mesh's size, or

@@ -12,10 +12,12 @@
 //   core       select_core.hpp select_core            -> dual hexes well inside, manifold-repaired, components
 //   pad        pad.hpp pad_layer                      -> core + one hex layer whose outer vertices are on the surface
 //   features   features.hpp snap_features             boundary vertices and edge chains -> input corners and curves,
-//              feature_patches.hpp project_to_patches  then the vertices beside them onto their side's patch
+//              feature_patches.hpp project_to_patches  then the vertices beside them onto their side's patch,
+//              feature_refusal.hpp                     then snaps that invert hexes repaired or undone
 //   smooth     surface_smooth.hpp, smooth.hpp         surface vertices along the surface, interior Laplacian
 //   optimise   optimise.hpp optimise_mesh             untangle, then raise the minimum scaled Jacobian (roles honoured)
-//   check      check_topology.hpp check_topology      boundary manifold, components and Euler = the input's
+//   check      check_topology.hpp check_topology      boundary manifold, components and Euler = the input's;
+//                                                     no inverted hex (inverted_hexes)
 //   report     mesh_report.hpp, geometry quality      quality, singular edges, surface distance, creases
 //
 // Writing the file is the caller's job (geometry::write_hex_mesh); MeshTimes::write is left 0.
@@ -29,6 +31,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <vector>
 #include <string>
 
 #include "dualhex/geometry/aabb_tree.hpp"
@@ -61,6 +64,10 @@ using geometry::QualitySummary;
 using geometry::RootCube;
 using geometry::TriangleSurface;
 
+/// The check stage fails a hex whose scaled Jacobian is at most this: inverted, or so flat
+/// that rounding (another formula, the written file's 17 digits) may make it inverted.
+inline constexpr double kFlatScaledJacobian = 1e-6;
+
 /// The size options (size, size_rel, min/max depth, ...: mesh_size.hpp) and the rest.
 struct MeshPipelineOptions : MeshSizeOptions {
     Balance balance = Balance::Weak;
@@ -68,6 +75,10 @@ struct MeshPipelineOptions : MeshSizeOptions {
     /// Sharp features: normal deviation (degrees) above which an input edge is a feature
     /// (geometry/feature_curves.hpp); 0 turns the features stage off.
     double feature_angle = 45.0;
+    /// Chains of feature edges shorter than this fraction of the bbox diagonal are not
+    /// features (geometry::FeatureOptions::min_chain_length): on the shared surfaces the CAD
+    /// models' chains are >= 0.17 of it, organic models' tessellation creases mostly < 0.1.
+    double feature_min_chain = 0.1;
     CoreOptions core;
     PadOptions pad;
     OptimiseOptions optimise;           ///< optimise.min_quality: the target minimum scaled Jacobian
@@ -112,6 +123,10 @@ struct MeshPipelineResult {
     int surface_smooth_iterations_done = 0;
     OptimiseResult optimise;
     TopologyCheck topology;
+    /// Check stage: the hexes of `mesh` with scaled Jacobian <= kFlatScaledJacobian (or NaN),
+    /// inverted or flat, in id order. Any is a failed check (the CLI exits 1), like a
+    /// topology mismatch.
+    std::vector<std::size_t> inverted_hexes;
     QualitySummary quality;
     /// Interior edges (not on a boundary quad) of the kept mesh with != 4 hexes: valence -> count.
     std::map<int, std::size_t> singular_edge_valences;

@@ -8,8 +8,11 @@
 // Contract: the inverted count is never larger than the input's and the minimum scaled
 //         Jacobian never lower; Surface vertices end on the surface (their closest point),
 //         Curve vertices on their polyline, Corner vertices where they were. Bounded by
-//         sweeps and by time_limit_ms of CPU time (checked between sweeps; phase 1 gets at
-//         most half of it).
+//         sweeps and by a work budget: work_per_vertex x the number of vertices visits of
+//         a vertex (one gradient or candidate step each; phase 1 gets at most half), counted,
+//         not timed, so the result is the same on any machine and under any load. An
+//         optional wall-clock bound (time_limit_ms, off by default) is a safety net only:
+//         when it is hit the result depends on the machine (hit_time_limit says so).
 // Errors: std::invalid_argument from check_constraints.
 //
 // Phase 1, untangle (only if some hex is inverted): the barrier energy f_eps of
@@ -30,6 +33,7 @@
 // the minimum reaches min_quality, a sweep moves nothing, or 10 sweeps in a row did not
 // raise the minimum by 1e-4.
 #include <cstddef>
+#include <vector>
 
 #include "dualhex/geometry/aabb_tree.hpp"
 #include "dualhex/geometry/hex_output.hpp"
@@ -43,10 +47,17 @@ struct OptimiseOptions {
     double min_quality = 0.5;   ///< target minimum scaled Jacobian
     int untangle_sweeps = 200;
     int quality_sweeps = 100;
-    /// Process CPU time, checked between sweeps; 0 (the library's default): none, only the
-    /// sweep bounds stop it, so the result does not depend on the machine's load (large
-    /// meshes can take minutes). `dualhex mesh` bounds it (--optimise-ms, default 2000).
+    /// Vertex visits allowed, per vertex of the mesh (0: no budget, only the sweep bounds).
+    /// Deterministic. 100: the medium preset's meshes of the shared surfaces take about
+    /// 1-5 s of one core here (`dualhex mesh --optimise-work`).
+    double work_per_vertex = 100;
+    /// Wall-clock bound in ms, checked before each vertex visit; 0 (default): none. Opt-in
+    /// only: with it the output depends on the machine's speed and load.
     double time_limit_ms = 0;
+    /// Hexes still inverted at the end: up to this many more runs on their region alone
+    /// (optimise_region, 2, 3, 4 rings, each with this budget per region vertex), where a
+    /// fresh untangling schedule often frees what the whole-mesh run stalled on.
+    int rescue_rounds = 3;
 };
 
 struct OptimiseResult {
@@ -57,8 +68,19 @@ struct OptimiseResult {
     int quality_sweeps = 0;       ///< done
     std::size_t moves = 0;        ///< accepted vertex moves of phase 2
     bool reached_target = false;  ///< min_after >= min_quality
-    bool hit_time_limit = false;
+    std::size_t work = 0;          ///< vertex visits done (both phases)
+    std::size_t work_budget = 0;   ///< allowed (0: unbounded)
+    bool hit_work_budget = false;  ///< stopped by the budget (deterministic)
+    bool hit_time_limit = false;   ///< stopped by time_limit_ms (machine-dependent)
 };
+
+/// The optimiser on the hexes within `rings` vertex rings of `seeds` only: they are cut out
+/// as a mesh of their own whose vertices on hexes outside the region are held, so nothing
+/// outside changes and the work (and the budget, per region vertex) is local. Its figures
+/// are the region's.
+OptimiseResult optimise_region(geometry::HexMesh& mesh, const std::vector<std::size_t>& seeds, int rings,
+                               const VertexConstraints& constraints, const geometry::AabbTree& tree,
+                               const FeatureCurves& curves, const OptimiseOptions& options);
 
 OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& constraints, const geometry::AabbTree& tree,
                              const FeatureCurves& curves, const OptimiseOptions& options, QualityState& state);
