@@ -90,7 +90,7 @@ std::vector<int> padded_levels(const HexMesh& padded, std::size_t core_hexes, co
 CoreSelection core_stage(const ClippedDual& dual, const InstallResult& installed, const RootCube& root,
                          const AabbTree& tree, const CoreOptions& options) {
     const EmbeddedDual embedded = embed_dual(dual, root_extent(installed), root, tree);
-    CoreSelection core = select_core(dual, embedded, geometry::surface_topology(tree.surface()).size(), options);
+    CoreSelection core = select_core(dual, embedded, geometry::surface_topology(tree.surface()), options, true);
     core.singular_edge_valences = interior_singular_edge_valences(core.mesh);
     return core;
 }

@@ -6,7 +6,9 @@
 #include <numeric>
 
 #include "dualhex/geometry/inside.hpp"
+#include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/geometry/manifold_repair.hpp"
+#include "dualhex/mesher/core_topology.hpp"
 
 namespace dualhex::mesher {
 namespace {
@@ -108,8 +110,62 @@ std::vector<int> hex_face_components(const std::vector<std::array<int, 8>>& hexe
     return out;
 }
 
+namespace {
+
+// The kept parts of a selection: the `keep` largest face-connected parts, renumbered.
+void keep_largest_parts(const std::vector<std::array<int, 8>>& cells, const std::vector<char>& selected,
+                        const EmbeddedDual& embedded, std::size_t keep, CoreSelection& out) {
+    std::vector<std::array<int, 8>> kept;
+    std::vector<std::uint32_t> kept_dual;
+    for (std::size_t h = 0; h < cells.size(); ++h)
+        if (selected[h]) {
+            kept.push_back(cells[h]);
+            kept_dual.push_back(static_cast<std::uint32_t>(h));
+        }
+    const std::vector<int> component = hex_face_components(kept, embedded.points.size());
+    std::vector<std::size_t> sizes;
+    for (int c : component) {
+        if (static_cast<std::size_t>(c) >= sizes.size()) sizes.resize(static_cast<std::size_t>(c) + 1, 0);
+        ++sizes[static_cast<std::size_t>(c)];
+    }
+    out.kept_components.clear();
+    out.dropped_components.clear();
+    for (std::size_t c = 0; c < sizes.size(); ++c) (c < keep ? out.kept_components : out.dropped_components).push_back(sizes[c]);
+    out.mesh = {};
+    out.dual_hex.clear();
+    std::vector<int> new_id(embedded.points.size(), -1);
+    for (std::size_t h = 0; h < kept.size(); ++h) {
+        if (static_cast<std::size_t>(component[h]) >= keep) continue;
+        std::array<int, 8> q{};
+        for (std::size_t i = 0; i < 8; ++i) {
+            int& id = new_id[static_cast<std::size_t>(kept[h][i])];
+            if (id < 0) {
+                id = static_cast<int>(out.mesh.points.size());
+                out.mesh.points.push_back(embedded.points[static_cast<std::size_t>(kept[h][i])]);
+            }
+            q[i] = id;
+        }
+        out.mesh.hexes.push_back(q);
+        out.dual_hex.push_back(kept_dual[h]);
+    }
+}
+
+bool has_topology(const geometry::HexMesh& mesh, const std::vector<geometry::SurfaceComponent>& input) {
+    const geometry::HexTopology t = geometry::check_hex_topology(mesh, 0);
+    return t.non_manifold_edges == 0 && t.non_manifold_vertices == 0 &&
+           geometry::compare_topology(t.boundary_components, input).same;
+}
+
+}  // namespace
+
 CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded, std::size_t input_components,
                           const CoreOptions& options) {
+    return select_core(dual, embedded, std::vector<geometry::SurfaceComponent>(input_components), options, false);
+}
+
+CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded,
+                          const std::vector<geometry::SurfaceComponent>& input, const CoreOptions& options,
+                          bool control_topology) {
     CoreSelection out;
     const std::size_t m = dual.hexes.size();
     std::vector<std::array<int, 8>> cells(m);
@@ -132,39 +188,21 @@ CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded,
     for (const auto& c : repair.changes) (c.selected ? out.repair_added : out.repair_removed) += 1;
     out.repair_manifold = repair.manifold();
     out.repair_remaining_defects = repair.remaining.non_manifold_edges.size() + repair.remaining.non_manifold_vertices.size();
+    const std::size_t keep = std::max<std::size_t>(1, input.size());
+    keep_largest_parts(cells, repair.selected, embedded, keep, out);
+    if (!control_topology || out.mesh.hexes.empty() || has_topology(out.mesh, input)) return out;
 
-    std::vector<std::array<int, 8>> kept;
-    std::vector<std::uint32_t> kept_dual;
-    for (std::size_t h = 0; h < m; ++h)
-        if (repair.selected[h]) {
-            kept.push_back(cells[h]);
-            kept_dual.push_back(static_cast<std::uint32_t>(h));
-        }
-    const std::vector<int> component = hex_face_components(kept, dual.points.size());
-    std::vector<std::size_t> sizes;
-    for (int c : component) {
-        if (static_cast<std::size_t>(c) >= sizes.size()) sizes.resize(static_cast<std::size_t>(c) + 1, 0);
-        ++sizes[static_cast<std::size_t>(c)];
-    }
-    const std::size_t keep = std::max<std::size_t>(1, input_components);
-    for (std::size_t c = 0; c < sizes.size(); ++c) (c < keep ? out.kept_components : out.dropped_components).push_back(sizes[c]);
-
-    std::vector<int> new_id(dual.points.size(), -1);
-    for (std::size_t h = 0; h < kept.size(); ++h) {
-        if (static_cast<std::size_t>(component[h]) >= keep) continue;
-        std::array<int, 8> q{};
-        for (std::size_t i = 0; i < 8; ++i) {
-            int& id = new_id[static_cast<std::size_t>(kept[h][i])];
-            if (id < 0) {
-                id = static_cast<int>(out.mesh.points.size());
-                out.mesh.points.push_back(embedded.points[static_cast<std::size_t>(kept[h][i])]);
-            }
-            q[i] = id;
-        }
-        out.mesh.hexes.push_back(q);
-        out.dual_hex.push_back(kept_dual[h]);
-    }
-    return out;
+    // The rule's selection has the wrong topology (tunnels or lost handles at thin parts):
+    // grow it again keeping topology under control, and take that only if it is right.
+    std::size_t handles = 0;
+    for (const auto& c : input) handles += static_cast<std::size_t>(std::max<std::int64_t>(0, (2 - c.euler()) / 2));
+    const std::vector<char> grown = grow_core_with_topology(cells, dual.points.size(), repair.selected, score, keep, handles);
+    CoreSelection controlled = out;
+    keep_largest_parts(cells, grown, embedded, keep, controlled);
+    if (controlled.mesh.hexes.empty() || !has_topology(controlled.mesh, input)) return out;
+    controlled.topology_controlled = true;
+    controlled.topology_dropped = out.mesh.hexes.size() - controlled.mesh.hexes.size();
+    return controlled;
 }
 
 }  // namespace dualhex::mesher

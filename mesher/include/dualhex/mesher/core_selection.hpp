@@ -23,6 +23,8 @@ struct CoreSelection {
     std::size_t repair_remaining_defects = 0;  ///< non-manifold edges + vertices left
     std::vector<std::size_t> kept_components;     ///< hexes per kept component, decreasing
     std::vector<std::size_t> dropped_components;  ///< hexes per dropped component, decreasing
+    bool topology_controlled = false;  ///< the rule's selection had the wrong topology; regrown (core_topology.hpp)
+    std::size_t topology_dropped = 0;  ///< hexes of the rule's selection the regrowth left out
     /// Interior edges of the core (not on its boundary) with != 4 hexes: valence -> count.
     /// The pad leaves them as they are (the schemes' valences).
     std::map<int, std::size_t> singular_edge_valences;

@@ -52,6 +52,12 @@ struct EmbeddedDual {
 
 [[nodiscard]] CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded,
                                         std::size_t input_components, const CoreOptions& options = {});
+/// The same, given the input surface's components (surface_topology); with
+/// control_topology, a selection whose boundary differs from the input's topology is grown
+/// again by topology-controlled steps (core_topology.hpp) and that is taken if it matches.
+[[nodiscard]] CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded,
+                                        const std::vector<geometry::SurfaceComponent>& input,
+                                        const CoreOptions& options, bool control_topology);
 
 /// Face-connected components of `hexes` (ids in [0, vertex_count)): per hex its component
 /// index, components numbered by decreasing size (ties: smallest first hex first).
