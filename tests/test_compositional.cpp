@@ -7,6 +7,7 @@
 #include "dualhex/checkers/compositional.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
+#include "test_wrong_rules.hpp"
 
 namespace dualhex {
 namespace {
@@ -61,33 +62,18 @@ TEST(Compositional, StrongRulePassesEveryWindowOfEveryType) {
     EXPECT_EQ(r.windows, 36635u);  // pinned: a change of the rule or the enumeration shows here
 }
 
-// A rule that is the strong rule except for one wrong choice: the enumeration must see it.
-class WrongChoice : public TransitionRule {
-public:
-    explicit WrongChoice(int mode) : mode_(mode) {}
-    std::optional<Placement> place(const LeafContext& ctx) const override {
-        auto p = StrongRule().place(ctx);
-        if (mode_ == 0 && p && p->element == "E") p->symmetry = CubeSymmetry({2, 1, 0}, {1, 1, 1}).compose(p->symmetry);
-        if (mode_ == 1 && p && p->element == "VC") return std::nullopt;  // a missing centre element
-        if (mode_ == 2 && !p && ctx.fine(1, 0, 0)) return Placement{"C1", {}};  // an element without a fine octant at P
-        return p;
-    }
-    std::uint64_t reach() const override { return strong_reach(); }
-
-private:
-    int mode_;
-};
 
 TEST(Compositional, WrongRulesAreCaught) {
     CompositionalOptions stop_early;
     stop_early.stop_after_failures = 1;
-    for (int mode : {0, 1}) {
-        const CompositionalResult r = run_compositional(WrongChoice(mode), library(), stop_early);
-        EXPECT_FALSE(r.all_passed()) << mode;
-        EXPECT_GE(r.failed, 1u) << mode;
-        EXPECT_FALSE(r.failures.empty()) << mode;
+    for (test::WrongChoiceMode mode : {test::WrongChoiceMode::MisorientedE, test::WrongChoiceMode::MissingVC}) {
+        const CompositionalResult r = run_compositional(test::WrongChoice(mode), library(), stop_early);
+        EXPECT_FALSE(r.all_passed()) << static_cast<int>(mode);
+        EXPECT_GE(r.failed, 1u) << static_cast<int>(mode);
+        EXPECT_FALSE(r.failures.empty()) << static_cast<int>(mode);
     }
-    const CompositionalResult lemma = run_compositional(WrongChoice(2), library(), stop_early);
+    const CompositionalResult lemma =
+        run_compositional(test::WrongChoice(test::WrongChoiceMode::AgainstLemma), library(), stop_early);
     EXPECT_FALSE(lemma.lemma_holds());
     EXPECT_FALSE(lemma.all_passed());
 }

@@ -7,6 +7,7 @@
 #include "dualhex/checkers/compositional_boundary.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
+#include "test_wrong_rules.hpp"
 #include "dualhex/topology/complex_builder.hpp"
 #include "dualhex/topology/primitives.hpp"
 #include "dualhex/topology/validation.hpp"
@@ -36,30 +37,14 @@ TEST(RootBoundary, StrongRuleEveryPolicy) {
     }
 }
 
-// The strong rule except for one wrong choice (as in test_compositional.cpp).
-class WrongChoice : public TransitionRule {
-public:
-    explicit WrongChoice(int mode) : mode_(mode) {}
-    std::optional<Placement> place(const LeafContext& ctx) const override {
-        auto p = StrongRule().place(ctx);
-        if (mode_ == 0 && p && p->element == "E") p->symmetry = CubeSymmetry({2, 1, 0}, {1, 1, 1}).compose(p->symmetry);
-        if (mode_ == 1 && p && p->element == "F") return std::nullopt;
-        return p;
-    }
-    std::uint64_t reach() const override { return strong_reach(); }
-
-private:
-    int mode_;
-};
-
 TEST(RootBoundary, WrongRulesAreCaught) {
     BoundaryOptions stop;
     stop.stop_after_failures = 1;
-    for (int mode : {0, 1})
+    for (test::WrongChoiceMode mode : {test::WrongChoiceMode::MisorientedE, test::WrongChoiceMode::MissingF})
         for (BoundaryPolicy policy : {BoundaryPolicy::Coarse, BoundaryPolicy::Mirror}) {
-            const BoundaryResult r = run_compositional_boundary(WrongChoice(mode), library(), policy, stop);
-            EXPECT_FALSE(r.all_passed()) << mode;
-            EXPECT_FALSE(r.failures.empty()) << mode;
+            const BoundaryResult r = run_compositional_boundary(test::WrongChoice(mode), library(), policy, stop);
+            EXPECT_FALSE(r.all_passed()) << static_cast<int>(mode);
+            EXPECT_FALSE(r.failures.empty()) << static_cast<int>(mode);
         }
 }
 
