@@ -1,6 +1,4 @@
-// Building the forest (forest.hpp). Every rank holds the input grid (read once per rank):
-// the refine callback asks it whether a quadrant's cell is subdivided. A first slice; a
-// distributed reader would partition the file instead (docs/distributed-plan.md).
+// The forest, its balance and the pairing fixed point (forest.hpp).
 #include "forest.hpp"
 
 #include <p8est_bits.h>
@@ -27,17 +25,12 @@ Leaf to_leaf(const p8est_quadrant_t& q) {
     return {q.level, std::int64_t{q.x} >> shift, std::int64_t{q.y} >> shift, std::int64_t{q.z} >> shift};
 }
 
+void init_unmarked(p8est_t*, p4est_topidx_t, p8est_quadrant_t* q) { quadrant_mark(q) = 0; }
+
 namespace {
 
-// Per-quadrant data: 1 = refine in the next pairing round.
-int& mark(p8est_quadrant_t* q) { return *static_cast<int*>(q->p.user_data); }
-
-void init_unmarked(p8est_t*, p4est_topidx_t, p8est_quadrant_t* q) { mark(q) = 0; }
-
-int refine_to_grid(p8est_t* forest, p4est_topidx_t, p8est_quadrant_t* q) {
-    const auto* grid = static_cast<const LeafGrid*>(forest->user_pointer);
-    return grid->is_subdivided(to_leaf(*q)) ? 1 : 0;
-}
+// Per-quadrant mark in the pairing: 1 = refine in the next round.
+int& mark(p8est_quadrant_t* q) { return quadrant_mark(q); }
 
 int refine_marked(p8est_t*, p4est_topidx_t, p8est_quadrant_t* q) { return mark(q); }
 
@@ -66,23 +59,19 @@ std::int64_t mark_unpaired(p8est_t* forest) {
 
 }  // namespace
 
-Forest::Forest(MPI_Comm comm, const LeafGrid& grid, Balance balance) {
-    if (grid.max_level() > kForestMaxLevel)
-        throw std::invalid_argument("the grid's finest level " + std::to_string(grid.max_level()) +
-                                    " is beyond p8est's " + std::to_string(kForestMaxLevel));
+Forest::Forest(MPI_Comm comm, int level) {
     connectivity_ = p8est_connectivity_new_unitcube();
-    // Uniform at the coarsest leaf level, spread over the ranks, so the refinement is parallel.
-    // (p8est's user pointer is void*; refine_to_grid only reads the grid.)
-    forest_ = p8est_new_ext(comm, connectivity_, 0, grid.min_level(), 1, sizeof(int), init_unmarked,
-                            const_cast<LeafGrid*>(&grid));
-    p8est_refine(forest_, 1, refine_to_grid, init_unmarked);
+    forest_ = p8est_new_ext(comm, connectivity_, 0, level, 1, sizeof(int), init_unmarked, nullptr);
+}
+
+void Forest::balance_and_pair(Balance balance) {
     const p8est_connect_type_t btype = balance == Balance::Strong ? P8EST_CONNECT_FULL : P8EST_CONNECT_FACE;
     // Fixed point: balance, keep families together, refine the unpaired; until nothing moves.
     for (;;) {
         p8est_balance(forest_, btype, init_unmarked);
         p8est_partition(forest_, 1, nullptr);
         std::int64_t marked = mark_unpaired(forest_), total = 0;
-        MPI_Allreduce(&marked, &total, 1, MPI_INT64_T, MPI_SUM, comm);
+        MPI_Allreduce(&marked, &total, 1, MPI_INT64_T, MPI_SUM, forest_->mpicomm);
         if (total == 0) break;
         ++rounds_;
         p8est_refine(forest_, 0, refine_marked, init_unmarked);

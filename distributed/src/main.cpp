@@ -1,13 +1,18 @@
 // dualhex-dist: the distributed mesher on p8est (distributed/README.md). GPL-2.0-or-later,
 // as it links p4est; the core library it uses stays MIT.
 //
-//   mpirun -np N dualhex-dist GRID [--balance weak|strong] [--outside-root coarse|mirror]
-//                                  [-o PREFIX] [--force] [--threads N] [--json]
+//   mpirun -np N dualhex-dist GRID.leaves          [common options]
+//   mpirun -np N dualhex-dist --surface FILE [size options of `dualhex mesh`] [common options]
+//     common: [--balance weak|strong] [--outside-root coarse|mirror] [-o PREFIX] [--force]
+//             [--threads N] [--json]
 //
-// Every rank reads GRID (a leaf file); p8est refines a forest to it, balances it, pairs it
-// and partitions it; each rank installs and dualizes its share (rank_mesh.hpp); rank 0
-// prints the summary, the same for any number of ranks. Exit 0 if every owned vertex's
-// dual is a cube, 1 if not, 2 for usage (or an existing output without --force), 3 for bad input.
+// A leaf file is read in byte ranges, one per rank (leaf_reader.hpp), and the forest built
+// level by level from the sorted runs (leaf_forest.hpp); a surface is read by every rank
+// and the forest refined by the serial octree's criterion (surface_forest.hpp). Then p8est
+// balances, pairs and partitions it; each rank installs and dualizes its share
+// (rank_mesh.hpp); rank 0 prints the summary, the same for any number of ranks. Exit 0 if
+// every owned vertex's dual is a cube, 1 if not, 2 for usage (or an existing output without
+// --force, or an octree beyond --max-leaves), 3 for bad input.
 #include <mpi.h>
 #include <p4est_base.h>
 #include <sc.h>
@@ -16,17 +21,24 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 
+#include "commands.hpp"  // apps/: UsageError, for the size options shared with `dualhex mesh`
 #include "dualhex/distributed/canonical_json.hpp"
+#include "dualhex/geometry/surface.hpp"
 #include "dualhex/grid/input_error.hpp"
-#include "dualhex/grid/leaf_file.hpp"
 #include "forest.hpp"
+#include "leaf_forest.hpp"
+#include "leaf_reader.hpp"
+#include "mesh_size_cli.hpp"
 #include "pvtu.hpp"
 #include "rank_mesh.hpp"
+#include "surface_forest.hpp"
 
 namespace {
 
@@ -35,9 +47,10 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 struct Options {
-    std::string input, balance = "weak", outside = "coarse", prefix;
+    std::string input, surface, balance = "weak", outside = "coarse", prefix;
     bool force = false, json = false;
     int threads = 1;
+    app::MeshSizeCli size;  // --preset, --size, ... (apps/mesh_size_cli.hpp), with --surface
 };
 
 long peak_rss_kb() {
@@ -46,8 +59,10 @@ long peak_rss_kb() {
     return u.ru_maxrss;
 }
 
-nlohmann::json rank_stats(int rank, const dist::RankMesh& m) {
+nlohmann::json rank_stats(int rank, const dist::RankMesh& m, const nlohmann::json& input, long forest_rss_kb) {
     return {{"rank", rank},
+            {"input", input},
+            {"peak_rss_kb_forest", forest_rss_kb},
             {"local_leaves", m.local_leaves},
             {"ghost_leaves", m.ghost_leaves},
             {"installed_cells", m.installed_cells},
@@ -93,6 +108,63 @@ void print_text(const nlohmann::json& doc) {
     if (doc.contains("output")) std::cout << "wrote " << doc["output"].get<std::string>() << '\n';
 }
 
+// The refined forest (before balance and pairing) and what building it measured.
+struct Built {
+    std::unique_ptr<dist::Forest> forest;
+    nlohmann::json rank_input;  ///< this rank's reading and building figures
+    nlohmann::json global;      ///< for rank 0's document
+    std::optional<geometry::RootCube> root;  ///< a surface's root cube
+    std::optional<std::size_t> max_leaves;   ///< a surface's leaf budget
+    double read_ms = 0;
+};
+
+Built from_leaves(const Options& opt, MPI_Comm comm) {
+    Built b;
+    const auto t0 = Clock::now();
+    dist::DistributedLeaves leaves = dist::read_leaves_distributed(comm, opt.input);
+    b.read_ms = ms_since(t0);
+    const long read_rss = peak_rss_kb();
+    b.forest = std::make_unique<dist::Forest>(comm, leaves.min_level);
+    const dist::LeafForestStats st = dist::refine_to_leaves(*b.forest, leaves);
+    b.rank_input = {{"bytes_read", leaves.bytes_read},         {"lines", leaves.lines_parsed},
+                    {"leaves_parsed", leaves.leaves_parsed},   {"leaves_sorted", leaves.leaves.size()},
+                    {"sort_bytes_sent", leaves.bytes_sorted_out}, {"refine_requests_sent", st.requests_sent},
+                    {"refine_bytes_sent", st.bytes_sent},      {"peak_rss_kb_read", read_rss}};
+    b.global = {{"forest_rounds", st.rounds}};
+    return b;
+}
+
+Built from_surface(const Options& opt, MPI_Comm comm) {
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    const mesher::MeshSizeOptions size = app::resolve_size_options(opt.size);
+    Built b;
+    const auto t0 = Clock::now();
+    geometry::SurfaceReport report;
+    geometry::TriangleSurface surface = geometry::read_surface(opt.surface, {}, &report);
+    const std::size_t triangles = surface.triangles.size();
+    if (rank == 0)
+        for (const auto& w : report.warnings) std::cerr << "warning: " << w << '\n';
+    const geometry::AabbTree tree(std::move(surface));
+    if (rank == 0) app::warn_if_capped(size, tree);
+    const geometry::SurfaceRefinement criterion(tree, mesher::octree_options(size, tree.bounds()));
+    b.read_ms = ms_since(t0);
+    const long read_rss = peak_rss_kb();
+    b.forest = std::make_unique<dist::Forest>(comm, 0);
+    const dist::SurfaceForestStats st = dist::refine_to_surface(*b.forest, criterion);
+    b.root = criterion.root();
+    b.max_leaves = size.max_leaves;
+    const Eigen::Vector3d& o = b.root->origin;
+    b.global = {{"octree",
+                 {{"leaves", st.octree_leaves}, {"crossing_leaves", st.crossing_leaves},
+                  {"curvature_splits", st.curvature_splits}, {"size_level", criterion.size_level()},
+                  {"target_size", criterion.options().surface_size}, {"rounds", st.rounds}}},
+                {"root", {{"origin", {o.x(), o.y(), o.z()}}, {"size", b.root->size}}}};
+    b.rank_input = {{"triangles", triangles}, {"decisions", st.decisions},
+                    {"ancestor_recomputations", st.ancestor_recomputations}, {"peak_rss_kb_read", read_rss}};
+    return b;
+}
+
 int run(const Options& opt, MPI_Comm comm) {
     int rank = 0, size = 1;
     MPI_Comm_rank(comm, &rank);
@@ -112,39 +184,58 @@ int run(const Options& opt, MPI_Comm comm) {
     const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt.threads));
     const auto t_start = Clock::now();
     auto t0 = Clock::now();
-    LeafGrid grid;
+    Built built;
     try {
-        grid = read_leaf_file(opt.input);  // every rank: the same file, the same verdict
-        if (grid.max_level() > dist::kForestMaxLevel)
-            throw InputError(opt.input, 0, "finest level " + std::to_string(grid.max_level()) + " is beyond p8est's " +
-                                               std::to_string(dist::kForestMaxLevel));
-    } catch (const InputError& e) {
+        built = opt.surface.empty() ? from_leaves(opt, comm) : from_surface(opt, comm);
+    } catch (const InputError& e) {  // every rank has the same (leaf_reader.hpp)
         if (rank == 0) std::cerr << "error: " << e.what() << '\n';
         return 3;
+    } catch (const geometry::SurfaceError& e) {  // every rank read the same file
+        if (rank == 0) std::cerr << "error: " << e.what() << '\n';
+        return 3;
+    } catch (const app::UsageError& e) {
+        if (rank == 0) std::cerr << "error: " << e.what() << '\n';
+        return 2;
+    } catch (const geometry::OctreeTooLarge& e) {  // every rank: the estimate, or the global count
+        if (rank == 0) std::cerr << "error: " << e.what() << " (a coarser --size or --size-rel, or raise --max-leaves)\n";
+        return 2;
     }
-    const double t_read = ms_since(t0);
+    const double t_read = built.read_ms;
+    const double t_forest_build = ms_since(t0) - t_read;
     const Balance balance = opt.balance == "strong" ? Balance::Strong : Balance::Weak;
     t0 = Clock::now();
-    const dist::Forest forest(comm, grid, balance);
-    grid = LeafGrid();  // the input is not needed past the refinement
-    const double t_forest = ms_since(t0);
+    dist::Forest& forest = *built.forest;
+    forest.balance_and_pair(balance);
+    if (built.max_leaves && static_cast<std::size_t>(forest.global_leaves()) > *built.max_leaves) {
+        if (rank == 0)
+            std::cerr << "error: paired grid: " << forest.global_leaves() << " leaves, more than the limit "
+                      << *built.max_leaves << " (a coarser --size or --size-rel, or raise --max-leaves)\n";
+        return 2;
+    }
+    const double t_forest = ms_since(t0) + t_forest_build;
+    const long forest_rss_kb = peak_rss_kb();
     t0 = Clock::now();
-    const dist::RankMesh mesh = dist::mesh_rank(
+    dist::RankMesh mesh = dist::mesh_rank(
         forest, {balance, opt.outside == "mirror" ? OutsideRoot::Mirror : OutsideRoot::Coarse, !opt.prefix.empty()});
     const double t_mesh = ms_since(t0);
+    if (built.root) {  // a surface: the pieces in model units (the root cube's embedding)
+        for (auto& p : mesh.piece.points) p = built.root->origin + built.root->size * p;
+    }
     if (!opt.prefix.empty()) {
         dist::write_piece(dist::piece_path(opt.prefix, rank), mesh.piece, rank, mesh.piece_vertex_id);
         if (rank == 0) dist::write_pvtu(opt.prefix, size);
     }
     const int max_level = forest.global_max_level();  // collective: before the ranks part
-    const std::vector<nlohmann::json> ranks = gather_json(rank_stats(rank, mesh), comm);
+    const std::vector<nlohmann::json> ranks = gather_json(rank_stats(rank, mesh, built.rank_input, forest_rss_kb), comm);
     if (rank != 0) return 0;
     CanonicalSummary total;
     for (const auto& r : ranks) total.add(summary_from_json(r["summary"]));
-    nlohmann::json doc{{"input", opt.input}, {"ranks", size}, {"balance", opt.balance}, {"outside_root", opt.outside},
+    nlohmann::json doc{{"input", opt.surface.empty() ? opt.input : opt.surface},
+                       {"source", opt.surface.empty() ? "leaves" : "surface"}, {"ranks", size}, {"balance", opt.balance}, {"outside_root", opt.outside},
                        {"leaves", forest.global_leaves()}, {"max_level", max_level},
                        {"pairing_rounds", forest.pairing_rounds()}, {"summary", to_json(total)}, {"per_rank", ranks},
                        {"ms", {{"read", t_read}, {"forest", t_forest}, {"mesh", t_mesh}, {"total", ms_since(t_start)}}}};
+    doc.update(built.global);
     if (!opt.prefix.empty()) doc["output"] = opt.prefix + ".pvtu";
     if (opt.json) std::cout << doc.dump(2) << '\n';
     else print_text(doc);
@@ -159,7 +250,15 @@ int main(int argc, char** argv) {
     p4est_init(nullptr, SC_LP_ERROR);
     CLI::App app{"dualhex-dist: the distributed dual-scheme mesher on p8est (GPL-2.0-or-later)"};
     Options opt;
-    app.add_option("grid", opt.input, "leaf file (.leaves)")->required();
+    auto* grid = app.add_option("grid", opt.input, "leaf file (.leaves), read in one byte range per rank");
+    auto* surface = app.add_option("--surface", opt.surface,
+                                   "closed surface (OBJ, OFF, STL, PLY): the forest by the octree criterion of "
+                                   "`dualhex mesh` (its size options below); the output is the installed grid's dual")
+                        ->excludes(grid);
+    auto* input = app.add_option_group("input", "a leaf file or --surface");
+    input->add_options(grid, surface);
+    input->require_option(1);
+    app::add_size_options(app, opt.size);
     app.add_option("--balance", opt.balance, "weak (face, P8EST_CONNECT_FACE; the weak rule) or strong (P8EST_CONNECT_FULL)")
         ->check(CLI::IsMember({"weak", "strong"}));
     app.add_option("--outside-root", opt.outside, "octants outside the root: coarse or mirror")

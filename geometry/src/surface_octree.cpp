@@ -52,72 +52,6 @@ std::size_t estimated_leaves(const RootCube& root, double area, int level) {
 }
 
 namespace {
-struct Builder {
-    const AabbTree& tree;
-    const RootCube& root;
-    const SurfaceOctreeOptions& opt;
-    const std::vector<double>& thickness;
-    const std::vector<Eigen::Vector3d>& normals;  // area-weighted, per triangle
-    int curvature_cap = 0, thickness_cap = 0;
-    std::vector<Leaf> leaves;
-    std::size_t crossing = 0, curvature_splits = 0;
-
-    bool overlaps(const Eigen::AlignedBox3d& box, int t) const {
-        const auto& s = tree.surface();
-        const auto& tri = s.triangles[t];
-        return triangle_box_overlap(box, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
-    }
-
-    // The split decision (surface_octree.hpp, "Refinement"); `tris` cross the cell, `near`
-    // is true if some triangle lies within the band.
-    bool split(const Leaf& cell, const std::vector<int>& tris, bool near) {
-        if (cell.level >= opt.max_depth) return false;
-        if (cell.level < opt.min_depth) return true;
-        const double edge = root.edge(cell.level);
-        if ((near || !tris.empty()) && opt.surface_size > 0 && edge > opt.surface_size) return true;
-        if (tris.empty()) return false;
-        if (opt.thickness_factor > 0 && cell.level < thickness_cap) {
-            double thin = std::numeric_limits<double>::infinity();
-            for (int t : tris) thin = std::min(thin, thickness[t]);
-            if (edge > opt.thickness_factor * thin) return true;
-        }
-        if (opt.curvature_angle > 0 && cell.level < curvature_cap &&
-            normal_spread(tris, normals) > opt.curvature_angle) {
-            ++curvature_splits;
-            return true;
-        }
-        return false;
-    }
-
-    // `parent_near`: the triangles within the band of the parent (all of them overlap the
-    // parent's box grown by the band, so they include everything near this cell).
-    void visit(const Leaf& cell, const std::vector<int>& parent_near) {
-        const Eigen::AlignedBox3d box = root.box(cell);
-        Eigen::AlignedBox3d grown = box;
-        grown.min().array() -= opt.surface_band;
-        grown.max().array() += opt.surface_band;
-        std::vector<int> near, tris;  // near includes tris
-        for (int t : parent_near) {
-            if (overlaps(box, t)) {
-                tris.push_back(t);
-                near.push_back(t);
-            } else if (opt.surface_band > 0 && overlaps(grown, t)) {
-                near.push_back(t);
-            }
-        }
-        if (!split(cell, tris, !near.empty())) {
-            leaves.push_back(cell);
-            crossing += tris.empty() ? 0 : 1;
-            return;
-        }
-        if (leaves.size() + 8 > opt.max_leaves)
-            throw OctreeTooLarge("surface octree: more than " + std::to_string(opt.max_leaves) +
-                                     " leaves (the size, thickness or curvature criteria ask for too fine cells)",
-                                 leaves.size() + 8);
-        for (const Leaf& child : children(cell)) visit(child, near);
-    }
-};
-
 void check(const SurfaceOctreeOptions& o) {
     if (o.max_depth < 0 || o.max_depth > 20)
         throw std::invalid_argument("surface_octree: max_depth must be in [0, 20], got " + std::to_string(o.max_depth));
@@ -130,33 +64,116 @@ void check(const SurfaceOctreeOptions& o) {
 }
 }  // namespace
 
-bool surface_crosses(const AabbTree& tree, const RootCube& root, const Leaf& cell) {
-    return tree.intersects_box(root.box(cell));
-}
-
-SurfaceOctree surface_octree(const AabbTree& tree, const SurfaceOctreeOptions& options) {
+SurfaceRefinement::SurfaceRefinement(const AabbTree& tree, const SurfaceOctreeOptions& options)
+    : tree_(&tree), opt_(options) {
     check(options);
-    SurfaceOctree out;
-    out.root = root_cube(tree.bounds(), options.margin);
-    int curvature_cap = options.max_depth, thickness_cap = options.max_depth;
+    root_ = root_cube(tree.bounds(), options.margin);
+    curvature_cap_ = thickness_cap_ = options.max_depth;
     if (options.surface_size > 0) {
-        out.size_level = level_for_size(out.root, options.surface_size);
-        curvature_cap = out.size_level + options.curvature_levels;
-        thickness_cap = out.size_level + options.thickness_levels;
-        const int level = std::min(out.size_level, options.max_depth);
-        const std::size_t estimate = estimated_leaves(out.root, surface_area(tree.surface()), level);
+        size_level_ = level_for_size(root_, options.surface_size);
+        curvature_cap_ = size_level_ + options.curvature_levels;
+        thickness_cap_ = size_level_ + options.thickness_levels;
+        const int level = std::min(size_level_, options.max_depth);
+        const std::size_t estimate = estimated_leaves(root_, surface_area(tree.surface()), level);
         if (estimate > options.max_leaves)
             throw OctreeTooLarge("surface octree: size " + std::to_string(options.surface_size) + " needs about " +
                                      std::to_string(estimate) + " leaves (level " + std::to_string(level) +
                                      " at the surface), more than the limit " + std::to_string(options.max_leaves),
                                  estimate);
     }
-    out.thickness = local_thickness(tree);
-    const std::vector<Eigen::Vector3d> normals = area_normals(tree.surface());
-    Builder b{tree, out.root, options, out.thickness, normals, curvature_cap, thickness_cap, {}, 0, 0};
-    std::vector<int> all(tree.surface().triangles.size());
+    thickness_ = local_thickness(tree);
+    normals_ = area_normals(tree.surface());
+}
+
+std::vector<int> SurfaceRefinement::all_triangles() const {
+    std::vector<int> all(tree_->surface().triangles.size());
     for (std::size_t t = 0; t < all.size(); ++t) all[t] = static_cast<int>(t);
-    b.visit(Leaf{}, all);
+    return all;
+}
+
+SurfaceRefinement::Decision SurfaceRefinement::decide(const Leaf& cell, const std::vector<int>& parent_near) const {
+    // `parent_near` overlap the parent's box grown by the band, so they include everything
+    // near this cell.
+    const auto& s = tree_->surface();
+    const auto overlaps = [&s](const Eigen::AlignedBox3d& box, int t) {
+        const auto& tri = s.triangles[t];
+        return triangle_box_overlap(box, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
+    };
+    const Eigen::AlignedBox3d box = root_.box(cell);
+    Eigen::AlignedBox3d grown = box;
+    grown.min().array() -= opt_.surface_band;
+    grown.max().array() += opt_.surface_band;
+    Decision d;
+    std::vector<int> tris;  // d.near includes tris
+    for (int t : parent_near) {
+        if (overlaps(box, t)) {
+            tris.push_back(t);
+            d.near.push_back(t);
+        } else if (opt_.surface_band > 0 && overlaps(grown, t)) {
+            d.near.push_back(t);
+        }
+    }
+    d.crosses = !tris.empty();
+    // The split decision (surface_octree.hpp, "Refinement").
+    const auto split = [&]() {
+        if (cell.level >= opt_.max_depth) return false;
+        if (cell.level < opt_.min_depth) return true;
+        const double edge = root_.edge(cell.level);
+        if (!d.near.empty() && opt_.surface_size > 0 && edge > opt_.surface_size) return true;
+        if (tris.empty()) return false;
+        if (opt_.thickness_factor > 0 && cell.level < thickness_cap_) {
+            double thin = std::numeric_limits<double>::infinity();
+            for (int t : tris) thin = std::min(thin, thickness_[t]);
+            if (edge > opt_.thickness_factor * thin) return true;
+        }
+        if (opt_.curvature_angle > 0 && cell.level < curvature_cap_ &&
+            normal_spread(tris, normals_) > opt_.curvature_angle) {
+            d.by_curvature = true;
+            return true;
+        }
+        return false;
+    };
+    d.split = split();
+    return d;
+}
+
+namespace {
+// The serial recursion over SurfaceRefinement, with the leaf budget.
+struct Builder {
+    const SurfaceRefinement& criterion;
+    std::vector<Leaf> leaves;
+    std::size_t crossing = 0, curvature_splits = 0;
+
+    void visit(const Leaf& cell, const std::vector<int>& parent_near) {
+        const SurfaceRefinement::Decision d = criterion.decide(cell, parent_near);
+        if (!d.split) {
+            leaves.push_back(cell);
+            crossing += d.crosses ? 1 : 0;
+            return;
+        }
+        curvature_splits += d.by_curvature ? 1 : 0;
+        const std::size_t max_leaves = criterion.options().max_leaves;
+        if (leaves.size() + 8 > max_leaves)
+            throw OctreeTooLarge("surface octree: more than " + std::to_string(max_leaves) +
+                                     " leaves (the size, thickness or curvature criteria ask for too fine cells)",
+                                 leaves.size() + 8);
+        for (const Leaf& child : children(cell)) visit(child, d.near);
+    }
+};
+}  // namespace
+
+bool surface_crosses(const AabbTree& tree, const RootCube& root, const Leaf& cell) {
+    return tree.intersects_box(root.box(cell));
+}
+
+SurfaceOctree surface_octree(const AabbTree& tree, const SurfaceOctreeOptions& options) {
+    const SurfaceRefinement criterion(tree, options);
+    SurfaceOctree out;
+    out.root = criterion.root();
+    out.size_level = criterion.size_level();
+    out.thickness = criterion.thickness();
+    Builder b{criterion, {}, 0, 0};
+    b.visit(Leaf{}, criterion.all_triangles());
     out.crossing_leaves = b.crossing;
     out.curvature_splits = b.curvature_splits;
     out.grid = LeafGrid(std::move(b.leaves), tree.surface().source);

@@ -73,6 +73,13 @@ Leaf parse_leaf(std::string_view text, const std::string& source, int line) {
 
 }  // namespace
 
+std::optional<Leaf> parse_leaf_line(std::string_view raw, const std::string& source, int line) {
+    if (const auto hash = raw.find('#'); hash != std::string_view::npos) raw = raw.substr(0, hash);
+    raw = trim(raw);
+    if (raw.empty()) return std::nullopt;
+    return parse_leaf(raw, source, line);
+}
+
 LeafGrid parse_leaves(std::string_view text, const std::string& source) {
     std::vector<Leaf> leaves;
     std::vector<int> lines;
@@ -83,16 +90,15 @@ LeafGrid parse_leaves(std::string_view text, const std::string& source) {
     while (pos < text.size()) {
         std::size_t eol = text.find('\n', pos);
         if (eol == std::string_view::npos) eol = text.size();
-        std::string_view content = text.substr(pos, eol - pos);
+        const std::string_view content = text.substr(pos, eol - pos);
         pos = eol + 1;
         // Lines are numbered with int (InputError, LeafGrid): refuse rather than overflow.
         if (line == std::numeric_limits<int>::max())
             throw InputError(source, 0, "more than " + std::to_string(line) + " lines");
         ++line;
-        if (const auto hash = content.find('#'); hash != std::string_view::npos) content = content.substr(0, hash);
-        content = trim(content);
-        if (content.empty()) continue;
-        leaves.push_back(parse_leaf(content, source, line));
+        const std::optional<Leaf> leaf = parse_leaf_line(content, source, line);
+        if (!leaf) continue;
+        leaves.push_back(*leaf);
         lines.push_back(line);
     }
     return LeafGrid(std::move(leaves), source, std::move(lines));

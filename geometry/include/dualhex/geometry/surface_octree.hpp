@@ -111,6 +111,44 @@ struct SurfaceOctree {
     std::size_t curvature_splits = 0;  ///< cells split by the curvature criterion alone
 };
 
+/// The refinement criterion of surface_octree ("Refinement" above), callable per cell, so
+/// that another octree builder (the distributed mesher's p8est refine callback) refines
+/// exactly like surface_octree. A cell's decision depends on its parent's `near`
+/// triangles (those overlapping the parent's box grown by the band; all triangles for the
+/// root): surface_octree filters them down the recursion, and so must every caller, for
+/// the same floating-point box tests and so the same octree.
+class SurfaceRefinement {
+public:
+    /// Checks the options, computes the root cube, the thickness and the normals, and
+    /// refuses (OctreeTooLarge) a size whose leaf estimate exceeds max_leaves; the same
+    /// errors as surface_octree.
+    SurfaceRefinement(const AabbTree& tree, const SurfaceOctreeOptions& options);
+
+    struct Decision {
+        bool split = false;
+        bool crosses = false;       ///< some triangle overlaps the closed cell
+        bool by_curvature = false;  ///< split by the curvature criterion alone
+        std::vector<int> near;      ///< the cell's near triangles (its children's parent_near)
+    };
+    /// The decision for `cell` given its parent's near triangles.
+    [[nodiscard]] Decision decide(const Leaf& cell, const std::vector<int>& parent_near) const;
+    /// Every triangle index: the root's parent_near.
+    [[nodiscard]] std::vector<int> all_triangles() const;
+
+    [[nodiscard]] const RootCube& root() const { return root_; }
+    [[nodiscard]] const SurfaceOctreeOptions& options() const { return opt_; }
+    [[nodiscard]] int size_level() const { return size_level_; }
+    [[nodiscard]] const std::vector<double>& thickness() const { return thickness_; }
+
+private:
+    const AabbTree* tree_;
+    SurfaceOctreeOptions opt_;
+    RootCube root_;
+    int size_level_ = -1, curvature_cap_ = 0, thickness_cap_ = 0;
+    std::vector<double> thickness_;
+    std::vector<Eigen::Vector3d> normals_;  // area-weighted, per triangle
+};
+
 /// Octree refined towards the surface (unbalanced, unpaired). Throws std::invalid_argument
 /// for max_depth outside [0, 20], min_depth > max_depth, a negative size, band, factor,
 /// angle or levels; OctreeTooLarge beyond max_leaves.

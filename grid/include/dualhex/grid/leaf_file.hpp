@@ -11,6 +11,7 @@
 //   "f.leaves:9: overlap: leaf 3 1 1 1 (line 9) lies inside leaf 2 0 0 0 (line 3)"
 //   "f.leaves: gap: cell 2 1 0 3 (level 2) is not covered by any leaf"
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -20,6 +21,10 @@ namespace dualhex {
 
 /// Reads and validates a leaf file. Throws InputError (also if it cannot be read).
 [[nodiscard]] LeafGrid read_leaf_file(const std::filesystem::path& path);
+/// One raw line of a leaf file (no '\n'): its leaf, or nothing for a blank or comment line.
+/// Throws InputError(source, line, ...) as the file reader does. For readers of a part of
+/// a file (the distributed mesher reads a byte range per rank).
+[[nodiscard]] std::optional<Leaf> parse_leaf_line(std::string_view raw, const std::string& source, int line);
 /// Parses leaf-file text; `source` names it in diagnostics.
 [[nodiscard]] LeafGrid parse_leaves(std::string_view text, const std::string& source = {});
 
