@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dualhex/distributed/canonical_json.hpp"
-#include "run_process.hpp"
+#include "test_distributed_run.hpp"
 #include "test_distributed_fixture.hpp"
 
 namespace dualhex {
@@ -17,23 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Scratch {
-    fs::path dir;
-    explicit Scratch(const std::string& name) : dir(fs::temp_directory_path() / ("dualhex_dist_" + name + "_" + std::to_string(::getpid()))) {
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    ~Scratch() { fs::remove_all(dir); }
-};
-
-test::ProcessResult run_dist(int np, const std::vector<std::string>& args, const fs::path& scratch) {
-    // Open MPI refuses root without these (CI runs as root); harmless otherwise.
-    ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-    ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-    std::vector<std::string> full{"--oversubscribe", "-np", std::to_string(np), DUALHEX_DIST_EXE};
-    full.insert(full.end(), args.begin(), args.end());
-    return test::run_process(DUALHEX_MPIEXEC, full, scratch);
-}
+using test::run_dist;
+using test::Scratch;
 
 nlohmann::json dist_json(int np, const fs::path& grid, const char* balance, const fs::path& scratch,
                          const char* outside = "coarse") {

@@ -37,7 +37,7 @@ File open_regular(const std::string& name, std::uint64_t& size) {
 std::uint64_t line_start_at_or_after(std::FILE* f, std::uint64_t offset, std::uint64_t size, std::uint64_t& read) {
     if (offset == 0 || offset >= size) return std::min(offset, size);
     fseeko(f, static_cast<off_t>(offset - 1), SEEK_SET);
-    std::array<char, 4096> buf{};
+    std::array<char, 128> buf{};  // lines are short: read little past the offset
     std::uint64_t pos = offset - 1;
     for (std::size_t got; (got = std::fread(buf.data(), 1, buf.size(), f)) > 0;) {
         read += got;
