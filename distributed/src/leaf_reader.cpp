@@ -124,7 +124,9 @@ std::vector<SortedLeaf> sort_over_ranks(MPI_Comm comm, std::vector<SortedLeaf> m
         send[r] *= kBytes, recv[r] *= kBytes;
         sdispl[r + 1] = sdispl[r] + send[r], rdispl[r + 1] = rdispl[r] + recv[r];
     }
-    bytes_out = static_cast<std::uint64_t>(sdispl[np]);
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    bytes_out = static_cast<std::uint64_t>(sdispl[np] - send[static_cast<std::size_t>(rank)]);  // to the other ranks
     std::vector<SortedLeaf> got(static_cast<std::size_t>(rdispl[np] / kBytes));
     MPI_Alltoallv(mine.data(), send.data(), sdispl.data(), MPI_BYTE, got.data(), recv.data(), rdispl.data(), MPI_BYTE,
                   comm);

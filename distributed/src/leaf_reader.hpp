@@ -34,7 +34,7 @@ struct DistributedLeaves {
     int min_level = 0, max_level = 0;  ///< over all ranks
     std::uint64_t bytes_read = 0;      ///< by this rank (its range, plus the ends of its lines)
     std::uint64_t lines_parsed = 0, leaves_parsed = 0;  ///< by this rank, before the sort
-    std::uint64_t bytes_sorted_out = 0;  ///< sent by this rank in the sort
+    std::uint64_t bytes_sorted_out = 0;  ///< sent by this rank to the others in the sort
 };
 
 /// Collective. Throws InputError on every rank for a missing or unreadable file, a bad

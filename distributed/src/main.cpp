@@ -59,6 +59,14 @@ long peak_rss_kb() {
     return u.ru_maxrss;
 }
 
+// This rank's CPU time (user + system), ms: the machine is shared, wall time is not the cost.
+double cpu_ms() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    const auto ms = [](const timeval& t) { return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_usec) / 1e3; };
+    return ms(u.ru_utime) + ms(u.ru_stime);
+}
+
 nlohmann::json rank_stats(int rank, const dist::RankMesh& m, const nlohmann::json& input, long forest_rss_kb) {
     return {{"rank", rank},
             {"input", input},
@@ -72,6 +80,7 @@ nlohmann::json rank_stats(int rank, const dist::RankMesh& m, const nlohmann::jso
             {"bytes_received", m.exchange.bytes_received},
             {"first_vertex_id", m.first_vertex_id},
             {"peak_rss_kb", peak_rss_kb()},
+            {"cpu_ms", cpu_ms()},
             {"ms", {{"ghost", m.ms.ghost}, {"exchange", m.ms.exchange}, {"contexts", m.ms.contexts},
                     {"install", m.ms.install}, {"dual", m.ms.dual}, {"summary", m.ms.summary}}},
             {"summary", to_json(m.summary)}};
