@@ -554,7 +554,7 @@ Stats check(const Cert& c) {
     for (int e = 0; e < E && (valences || dual); ++e) {  // an interior edge: a cycle of 4 cells
         st[kInnerEdges] += !m.bdry_e[e];
         if (!m.bdry_e[e] && len(fan_around(c, m, e).first) != 5)
-            fail(m.edge_name(e), " is interior with cells not 4");
+            fail(m.edge_name(e), " is interior but not in a cycle of 4 cells");
     }
     check_counts(c, m, st);
     return st;
@@ -667,8 +667,9 @@ void check_manifest(const std::filesystem::path& manifest, const string& text, T
         bad(0, "certificates carry covers lines but the manifest pins no 'covers N'");
 }
 string with_commas(size_t n) {
-    string s = std::to_string(n);
-    for (int i = len(s) - 3; i > 0; i -= 3) s.insert(i, ",");
+    const string d = std::to_string(n);
+    string s;
+    for (int i = 0; i < len(d); ++i) s += (i && (len(d) - i) % 3 == 0 ? "," : "") + string(1, d[i]);
     return s;
 }
 // The whole run on argv-style arguments; prints the verdict, returns the exit code.
