@@ -106,7 +106,7 @@ def main():
                 print("output differs:", what, diff)
 
     # (a) every shipped manifest and every shipped certificate file
-    for d in ["", "weak", "variants", "windows"]:
+    for d in ["", "weak", "variants", "windows", "boundary"]:
         compare([os.path.join(SHIPPED, d, "manifest")], "shipped manifest " + d)
         for f in sorted(os.listdir(os.path.join(SHIPPED, d))):
             if f.endswith(".cert"):

@@ -28,7 +28,8 @@ target_compile_definitions(test_proofs_checker_hostile PRIVATE
 add_dependencies(test_proofs_checker_hostile dualhex-proof-checker)
 
 # Fuzzing the checker (libFuzzer + ASan + UBSan, proofs/fuzz/): only where clang++ links
-# -fsanitize=fuzzer (Debian: clang, libfuzzer-14-dev). The CTest run is bounded to 45 s;
+# -fsanitize=fuzzer (Debian: clang, libfuzzer-14-dev); the harness includes the checker's source.
+# The CTest run is bounded to 45 s;
 # bench/run_fuzz.sh runs longer. Crashes land in build/proofs/fuzz-artifacts/.
 find_program(DUALHEX_CLANGXX NAMES clang++ clang++-14)
 set(dualhex_fuzz_found OFF)
@@ -48,7 +49,7 @@ if(DUALHEX_FUZZ)
   set(harness_src ${PROJECT_SOURCE_DIR}/proofs/fuzz/checker_fuzz.cpp)
   add_custom_command(OUTPUT ${fuzz_bin}
     COMMAND ${CMAKE_CXX_COMPILER_LAUNCHER} ${DUALHEX_CLANGXX} -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined
-            -fno-sanitize-recover=undefined -DDUALHEX_CHECKER_FUZZ ${harness_src} ${checker_src} -o ${fuzz_bin}
+            -fno-sanitize-recover=undefined ${harness_src} -o ${fuzz_bin}
     DEPENDS ${checker_src} ${harness_src} COMMENT "Building the proof checker fuzzer (clang, libFuzzer)" VERBATIM)
   add_custom_command(OUTPUT ${fuzz_dir}/fuzz-seeds/manifest
     COMMAND ${CMAKE_COMMAND} -DSHIPPED=${PROJECT_SOURCE_DIR}/proofs/certificates -DOUT=${fuzz_dir}/fuzz-seeds

@@ -249,6 +249,21 @@ TEST_F(Hostile, CoverageIsClaimedOnlyWhenChecked) {
     EXPECT_NE(r.out.find("covers lines are checked only with a manifest"), std::string::npos) << r.out;
 }
 
+// The checker proves a cell a sphere from closed + oriented + connected + V - E + F = 2 (no
+// walk around each vertex): a cell pinched at a vertex (the cube with its corners 0 and 7
+// made one vertex; still closed, oriented and connected) has V - E + F = 1 and is rejected.
+TEST_F(Hostile, ACellPinchedAtAVertexIsNoSphere) {
+    std::string pinched = cube(0, 1);
+    pinched.replace(pinched.find("vertices 8"), 10, "vertices 7");
+    pinched.replace(pinched.rfind("\n1 1 1\n") + 1, 6, "");  // vertex 7
+    for (const char* face : {"4 5 7 6", "2 6 7 3", "1 3 7 5"}) {
+        std::string to = face;
+        to[to.find('7')] = '0';
+        pinched.replace(pinched.find(face), to.size(), to);
+    }
+    expect_rejected(pinched, "cell 0 has V - E + F = 1, not 2", "cube pinched at a vertex");
+}
+
 TEST_F(Hostile, ATorusCellSpanningHalfThePeriodIsRejected) {
     // the mask-0 torus with its x planes 0, 12, 24, 36 moved to 0, 1, 2, X: for X = 25 a valid
     // irregular torus; for X = 26 the cells between x = 2 and 26 span half the period 48, so
