@@ -33,11 +33,72 @@ struct Loops {
     }
 };
 
-// Blocks of faces, one count row each: more blocks than threads buy nothing, and every
-// block costs a row of n_vertices counts.
+// Blocks of faces, one count row each: two per thread (so that a thread that starts late
+// still gets a share), at most 8 (every block costs a row of n_vertices counts); one
+// thread, one block (no extra pass).
 std::size_t n_blocks(std::size_t n_faces) {
     const auto threads = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
-    return std::clamp<std::size_t>(std::min(threads, n_faces / 4096), 1, 8);
+    return std::clamp<std::size_t>(std::min(threads == 1 ? 1 : 2 * threads, n_faces / 4096), 1, 8);
+}
+
+// 4-5 with one thread: per bucket in vertex order, a new larger endpoint is the next edge.
+void number_serially(std::size_t nv, const std::vector<std::uint32_t>& bucket, const std::vector<std::uint32_t>& other,
+                     const std::vector<std::uint32_t>& corner_of, DerivedEdges& out) {
+    auto& edges = out.edge_vertices;
+    for (std::size_t v = 0; v < nv; ++v) {
+        const std::size_t first_edge = edges.size();
+        for (std::uint32_t s = bucket[v]; s < bucket[v + 1]; ++s) {
+            const VertexHandle w(static_cast<std::int32_t>(other[s]));
+            std::size_t e = first_edge;
+            while (e < edges.size() && edges[e][1] != w) ++e;
+            if (e == edges.size()) edges.push_back({VertexHandle(v), w});
+            out.face_edges[corner_of[s]] = EdgeHandle(e);
+        }
+    }
+}
+
+// 4-5 with more: the edges per vertex counted in parallel, numbered by a prefix sum, then
+// written in parallel (the same numbering).
+void number_in_parallel(std::size_t nv, const std::vector<std::uint32_t>& bucket, std::vector<std::uint32_t>& other,
+                        const std::vector<std::uint32_t>& corner_of, DerivedEdges& out) {
+    // 4. Per bucket, its distinct larger endpoints (edges); a repeat is marked with the
+    // rank of its first occurrence. The edge count per vertex goes to first_edge.
+    std::vector<std::uint32_t> first_edge(nv + 1, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t v = r.begin(); v != r.end(); ++v) {
+            std::uint32_t rank = 0;
+            for (std::uint32_t s = bucket[v]; s < bucket[v + 1]; ++s) {
+                std::uint32_t seen = 0, j = bucket[v];
+                for (; j < s; ++j) {
+                    if (other[j] & kRepeat) continue;
+                    if (other[j] == other[s]) break;
+                    ++seen;
+                }
+                if (j < s) other[s] = kRepeat | seen;
+                else ++rank;
+            }
+            first_edge[v + 1] = rank;
+        }
+    });
+    for (std::size_t v = 0; v < nv; ++v) first_edge[v + 1] += first_edge[v];
+
+    // 5. Number the edges: vertex v's are first_edge[v] + rank.
+    out.edge_vertices.resize(first_edge[nv]);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t v = r.begin(); v != r.end(); ++v) {
+            std::uint32_t next = first_edge[v];
+            for (std::uint32_t s = bucket[v]; s < bucket[v + 1]; ++s) {
+                std::uint32_t e;
+                if (other[s] & kRepeat) {
+                    e = first_edge[v] + (other[s] & ~kRepeat);
+                } else {
+                    e = next++;
+                    out.edge_vertices[e] = {VertexHandle(v), VertexHandle(static_cast<std::int32_t>(other[s]))};
+                }
+                out.face_edges[corner_of[s]] = EdgeHandle(static_cast<std::size_t>(e));
+            }
+        }
+    });
 }
 
 }  // namespace
@@ -81,46 +142,10 @@ DerivedEdges derive_edges(std::size_t nv, const std::vector<std::uint32_t>& face
     });
     std::vector<std::uint32_t>().swap(cursor);
 
-    // 4. Per bucket, its distinct larger endpoints (edges); a repeat is marked with the
-    // rank of its first occurrence. The edge count per vertex goes to new_edges.
-    std::vector<std::uint32_t> first_edge(nv + 1, 0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t v = r.begin(); v != r.end(); ++v) {
-            std::uint32_t rank = 0;
-            for (std::uint32_t s = bucket[v]; s < bucket[v + 1]; ++s) {
-                std::uint32_t seen = 0, j = bucket[v];
-                for (; j < s; ++j) {
-                    if (other[j] & kRepeat) continue;
-                    if (other[j] == other[s]) break;
-                    ++seen;
-                }
-                if (j < s) other[s] = kRepeat | seen;
-                else ++rank;
-            }
-            first_edge[v + 1] = rank;
-        }
-    });
-    for (std::size_t v = 0; v < nv; ++v) first_edge[v + 1] += first_edge[v];
-
-    // 5. Number the edges: vertex v's are first_edge[v] + rank.
     DerivedEdges out;
     out.face_edges.resize(n_corners);
-    out.edge_vertices.resize(first_edge[nv]);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t v = r.begin(); v != r.end(); ++v) {
-            std::uint32_t next = first_edge[v];
-            for (std::uint32_t s = bucket[v]; s < bucket[v + 1]; ++s) {
-                std::uint32_t e;
-                if (other[s] & kRepeat) {
-                    e = first_edge[v] + (other[s] & ~kRepeat);
-                } else {
-                    e = next++;
-                    out.edge_vertices[e] = {VertexHandle(v), VertexHandle(static_cast<std::int32_t>(other[s]))};
-                }
-                out.face_edges[corner_of[s]] = EdgeHandle(static_cast<std::size_t>(e));
-            }
-        }
-    });
+    if (blocks == 1) number_serially(nv, bucket, other, corner_of, out);
+    else number_in_parallel(nv, bucket, other, corner_of, out);
     return out;
 }
 
