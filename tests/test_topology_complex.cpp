@@ -100,6 +100,15 @@ TEST(TopologyComplex, RawConstructionRejectsBadArrays) {
     EXPECT_THROW(CellComplex(pts, {0, 3}, {VertexHandle(0), VertexHandle(1), VertexHandle(7)}, {0}, {}),
                  std::invalid_argument);                                                      // unknown vertex
     EXPECT_THROW(CellComplex(pts, {0, 3}, tri, {0, 1}, {HalfFaceHandle(2)}), std::invalid_argument);  // unknown face
+    EXPECT_THROW(CellComplex(pts, {0, 3}, {VertexHandle(0), VertexHandle(-1), VertexHandle(2)}, {0}, {}),
+                 std::invalid_argument);                                                      // invalid vertex
+    EXPECT_THROW(CellComplex(pts, {0, 3}, tri, {0, 1}, {HalfFaceHandle(-1)}), std::invalid_argument);  // invalid half-face
+    try {  // the first out-of-range id is the one named
+        CellComplex(pts, {0, 3}, {VertexHandle(0), VertexHandle(9), VertexHandle(8)}, {0}, {});
+        ADD_FAILURE() << "no throw";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "CellComplex: face vertex out of range: 9");
+    }
 }
 
 TEST(TopologyComplex, FaceEdgesFollowTheLoop) {

@@ -4,9 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
 #include "edge_derivation.hpp"
 
 namespace dualhex {
@@ -19,18 +16,17 @@ void check_offsets(const std::vector<std::uint32_t>& offsets, std::size_t n_item
         if (offsets[i] < offsets[i - 1]) throw std::invalid_argument(std::string("CellComplex: decreasing ") + what + " offsets");
 }
 
-// The first i < n with bad(i), or n: in parallel, the same index as a serial scan (so the
-// error names the same entity for any thread count).
-template <class Bad>
-std::size_t first_bad(std::size_t n, const Bad& bad) {
-    return tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, n, 1 << 16), n,
-        [&](const tbb::blocked_range<std::size_t>& r, std::size_t found) {
-            for (std::size_t i = r.begin(); i != r.end() && i < found; ++i)
-                if (bad(i)) return i;
-            return found;
-        },
-        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+// The first position in `ids` whose id is not below `n` (a negative id counts as huge), or
+// ids.size(). A branch-free maximum first (vectorised: a fraction of an instruction per
+// id), the scan for the position only when some id is out of range.
+template <class H>
+std::size_t first_out_of_range(const std::vector<H>& ids, std::size_t n) {
+    std::uint32_t most = 0;
+    for (const H& h : ids) most = std::max(most, static_cast<std::uint32_t>(h.idx));
+    if (most < n) return ids.size();
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        if (static_cast<std::uint32_t>(ids[i].idx) >= n) return i;
+    return ids.size();
 }
 
 }  // namespace
@@ -45,20 +41,12 @@ CellComplex::CellComplex(std::vector<LatticePoint> positions, std::vector<std::u
       cell_halffaces_(std::move(cell_halffaces)) {
     check_offsets(face_offsets_, face_loops_.size(), "face");
     check_offsets(cell_offsets_, cell_halffaces_.size(), "cell");
-    if (const std::size_t f = first_bad(n_faces(), [&](std::size_t f) { return face_offsets_[f] == face_offsets_[f + 1]; });
-        f < n_faces())
-        throw std::invalid_argument("CellComplex: face " + std::to_string(f) + " has an empty loop");
-    if (const std::size_t i = first_bad(face_loops_.size(), [&](std::size_t i) {
-            const VertexHandle v = face_loops_[i];
-            return !v.valid() || v.index() >= positions_.size();
-        });
-        i < face_loops_.size())
+    for (std::size_t f = 0; f < n_faces(); ++f)
+        if (face_offsets_[f] == face_offsets_[f + 1])
+            throw std::invalid_argument("CellComplex: face " + std::to_string(f) + " has an empty loop");
+    if (const std::size_t i = first_out_of_range(face_loops_, positions_.size()); i < face_loops_.size())
         throw std::invalid_argument("CellComplex: face vertex out of range: " + std::to_string(face_loops_[i].idx));
-    if (const std::size_t i = first_bad(cell_halffaces_.size(), [&](std::size_t i) {
-            const HalfFaceHandle h = cell_halffaces_[i];
-            return !h.valid() || h.face().index() >= n_faces();
-        });
-        i < cell_halffaces_.size())
+    if (const std::size_t i = first_out_of_range(cell_halffaces_, 2 * n_faces()); i < cell_halffaces_.size())
         throw std::invalid_argument("CellComplex: cell half-face out of range: " + std::to_string(cell_halffaces_[i].idx));
     derive_edges();
 }
