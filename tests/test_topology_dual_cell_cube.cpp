@@ -48,6 +48,9 @@ TEST(TopologyDualCellCube, BrokenCellsAreNamed) {
     auto triangle = kCube;
     triangle[3].pop_back();
     EXPECT_EQ(reason(triangle), "a dual face that is not a quadrilateral");
+    auto nine = kCube;
+    nine[5][3] = 9;  // a ninth dual vertex
+    EXPECT_EQ(reason(nine), "more than 8 dual vertices");
     auto five = kCube;
     five.pop_back();
     EXPECT_EQ(reason(five), "fewer than 6 dual faces");
