@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <optional>
 #include <random>
 
 #include <tbb/task_arena.h>
@@ -237,7 +238,7 @@ ReferenceEdges reference_edges(const CellComplex& k) {
 // faces for the parallel derivation to split them into several blocks.
 CellComplex random_loops(std::uint32_t seed) {
     std::mt19937 rng(seed);
-    constexpr std::size_t kVertices = 3000, kFaces = 40000;
+    constexpr std::size_t kVertices = 2000, kFaces = 20000;
     std::vector<LatticePoint> positions(kVertices);
     std::vector<std::uint32_t> offsets{0};
     std::vector<VertexHandle> loops;
@@ -251,18 +252,19 @@ CellComplex random_loops(std::uint32_t seed) {
 }
 
 TEST(TopologyComplex, EdgeNumberingIsTheDefinitionForAnyThreadCount) {
+    std::optional<ReferenceEdges> want;
     for (const int threads : {1, 2, 3, 8}) {
         tbb::task_arena arena(threads);
         arena.execute([&] {
             const CellComplex k = random_loops(17);
-            const ReferenceEdges want = reference_edges(k);
-            ASSERT_EQ(k.n_edges(), want.vertices.size()) << threads << " threads";
-            for (std::size_t e = 0; e < k.n_edges(); ++e)
-                ASSERT_EQ(k.edge_vertices(EdgeHandle(e)), want.vertices[e]) << "edge " << e << ", " << threads << " threads";
-            std::size_t corner = 0;
+            if (!want) want = reference_edges(k);  // the same loops every time
+            std::vector<std::array<VertexHandle, 2>> edges;
+            for (std::size_t e = 0; e < k.n_edges(); ++e) edges.push_back(k.edge_vertices(EdgeHandle(e)));
+            std::vector<EdgeHandle> face_edges;
             for (std::size_t f = 0; f < k.n_faces(); ++f)
-                for (EdgeHandle e : k.face_edges(FaceHandle(f)))
-                    ASSERT_EQ(e, want.face_edges[corner++]) << "face " << f << ", " << threads << " threads";
+                for (EdgeHandle e : k.face_edges(FaceHandle(f))) face_edges.push_back(e);
+            EXPECT_TRUE(edges == want->vertices) << threads << " threads";
+            EXPECT_TRUE(face_edges == want->face_edges) << threads << " threads";
         });
     }
 }
