@@ -7,7 +7,8 @@
 // its own grid checks and contexts), Incidence, clipped_dual. Prints the median, min and max
 // wall seconds of each phase and the process CPU seconds of the install + dual, the speedup of
 // the median against the first thread count, clipped-dual hexes per wall second, and checks
-// that every run's complex and hexes equal the first run's (sizes and a digest: bit-identical
+// that every run's complex and hexes equal the first run's (a digest of the complex with its
+// edges, the dual points and hexes, printed to compare builds; bit-identical
 // results are tested in tests/test_install_threads.cpp; here it guards the figures).
 // A machine-readable line per (grid, threads): SCALING name threads leaves hexes
 // checks contexts install incidence dual total cpu speedup Mhex_per_s.
@@ -52,6 +53,14 @@ std::uint64_t digest(const CellComplex& k, const ClippedDual& d) {
     for (const auto& p : k.positions()) mix(static_cast<std::uint64_t>(p.x * 73856093 ^ p.y * 19349663 ^ p.z * 83492791));
     for (auto v : k.face_loops()) mix(static_cast<std::uint64_t>(v.idx));
     for (auto f : k.all_cell_halffaces()) mix(static_cast<std::uint64_t>(f.idx));
+    for (std::size_t e = 0; e < k.n_edges(); ++e)
+        for (VertexHandle v : k.edge_vertices(EdgeHandle(e))) mix(static_cast<std::uint64_t>(v.idx));
+    for (std::size_t f = 0; f < k.n_faces(); ++f)
+        for (EdgeHandle e : k.face_edges(FaceHandle(f))) mix(static_cast<std::uint64_t>(e.idx));
+    for (const RationalPoint& p : d.points) {
+        for (int a = 0; a < 3; ++a) mix(static_cast<std::uint64_t>(p.sum[a]));
+        mix(static_cast<std::uint64_t>(p.denominator));
+    }
     for (const auto& hex : d.hexes)
         for (auto i : hex) mix(i);
     return h;
@@ -126,7 +135,8 @@ int main(int argc, char** argv) {
                 med[p] = v[v.size() / 2], lo[p] = v.front(), hi[p] = v.back();
             }
             if (base_total == 0) base_total = med[5];
-            std::printf("%s, %zu leaves, %d thread(s)%s\n", name.c_str(), grid.size(), th, same ? "" : "  RESULT DIFFERS");
+            std::printf("%s, %zu leaves, %d thread(s)%s, digest %016llx\n", name.c_str(), grid.size(), th,
+                        same ? "" : "  RESULT DIFFERS", static_cast<unsigned long long>(first_digest));
             for (int p = 0; p < kPhases; ++p)
                 std::printf("  %-10s %8.4f [%.4f, %.4f]\n", kNames[p], med[p], lo[p], hi[p]);
             const double mhex = static_cast<double>(samples.front().hexes) / med[5] / 1e6;

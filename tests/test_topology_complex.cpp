@@ -2,6 +2,11 @@
 // reference complexes (single cube, 2x2x2 and 3x3x3 blocks).
 #include <gtest/gtest.h>
 
+#include <map>
+#include <optional>
+#include <random>
+
+#include <tbb/task_arena.h>
 
 #include "dualhex/topology/complex_builder.hpp"
 #include "dualhex/topology/dual.hpp"
@@ -96,6 +101,15 @@ TEST(TopologyComplex, RawConstructionRejectsBadArrays) {
     EXPECT_THROW(CellComplex(pts, {0, 3}, {VertexHandle(0), VertexHandle(1), VertexHandle(7)}, {0}, {}),
                  std::invalid_argument);                                                      // unknown vertex
     EXPECT_THROW(CellComplex(pts, {0, 3}, tri, {0, 1}, {HalfFaceHandle(2)}), std::invalid_argument);  // unknown face
+    EXPECT_THROW(CellComplex(pts, {0, 3}, {VertexHandle(0), VertexHandle(-1), VertexHandle(2)}, {0}, {}),
+                 std::invalid_argument);                                                      // invalid vertex
+    EXPECT_THROW(CellComplex(pts, {0, 3}, tri, {0, 1}, {HalfFaceHandle(-1)}), std::invalid_argument);  // invalid half-face
+    try {  // the first out-of-range id is the one named
+        CellComplex(pts, {0, 3}, {VertexHandle(0), VertexHandle(9), VertexHandle(8)}, {0}, {});
+        ADD_FAILURE() << "no throw";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "CellComplex: face vertex out of range: 9");
+    }
 }
 
 TEST(TopologyComplex, FaceEdgesFollowTheLoop) {
@@ -186,6 +200,73 @@ TEST(TopologyComplex, Block3x3x3) {
     EXPECT_EQ(dual.mesh.hexes.size(), 8u);
     expect_positive_hexes(k, dual.mesh);
     EXPECT_EQ(interior_dual_edge_valence_histogram(k, inc), (std::map<int, std::size_t>{{4, 6}}));
+}
+
+// Edges by the definition (cell_complex.hpp): the distinct unordered pairs of consecutive
+// loop vertices, numbered by smaller endpoint, then by first appearance in corner order.
+struct ReferenceEdges {
+    std::vector<std::array<VertexHandle, 2>> vertices;
+    std::vector<EdgeHandle> face_edges;
+};
+
+ReferenceEdges reference_edges(const CellComplex& k) {
+    std::map<std::pair<VertexHandle, VertexHandle>, std::size_t> first_corner;
+    std::vector<std::pair<VertexHandle, VertexHandle>> corner_pair;
+    for (std::size_t f = 0; f < k.n_faces(); ++f) {
+        const auto loop = k.face_vertices(FaceHandle(f));
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const VertexHandle a = loop[i], b = loop[(i + 1) % loop.size()];
+            const auto key = std::minmax(a, b);
+            first_corner.try_emplace(key, corner_pair.size());
+            corner_pair.push_back(key);
+        }
+    }
+    std::vector<std::pair<std::pair<VertexHandle, std::size_t>, std::pair<VertexHandle, VertexHandle>>> order;
+    for (const auto& [key, corner] : first_corner) order.push_back({{key.first, corner}, key});
+    std::sort(order.begin(), order.end());
+    ReferenceEdges out;
+    std::map<std::pair<VertexHandle, VertexHandle>, EdgeHandle> id;
+    for (const auto& [rank, key] : order) {
+        id[key] = EdgeHandle(out.vertices.size());
+        out.vertices.push_back({key.first, key.second});
+    }
+    for (const auto& key : corner_pair) out.face_edges.push_back(id[key]);
+    return out;
+}
+
+// Random loops (repeated vertices and degenerate loops included) over few vertices, enough
+// faces for the parallel derivation to split them into several blocks.
+CellComplex random_loops(std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    constexpr std::size_t kVertices = 2000, kFaces = 20000;
+    std::vector<LatticePoint> positions(kVertices);
+    std::vector<std::uint32_t> offsets{0};
+    std::vector<VertexHandle> loops;
+    for (std::size_t f = 0; f < kFaces; ++f) {
+        const std::size_t n = 1 + rng() % 6;
+        const std::size_t base = rng() % kVertices;
+        for (std::size_t i = 0; i < n; ++i) loops.emplace_back((base + rng() % 40) % kVertices);
+        offsets.push_back(static_cast<std::uint32_t>(loops.size()));
+    }
+    return {std::move(positions), std::move(offsets), std::move(loops), {0}, {}};
+}
+
+TEST(TopologyComplex, EdgeNumberingIsTheDefinitionForAnyThreadCount) {
+    std::optional<ReferenceEdges> want;
+    for (const int threads : {1, 2, 3, 8}) {
+        tbb::task_arena arena(threads);
+        arena.execute([&] {
+            const CellComplex k = random_loops(17);
+            if (!want) want = reference_edges(k);  // the same loops every time
+            std::vector<std::array<VertexHandle, 2>> edges;
+            for (std::size_t e = 0; e < k.n_edges(); ++e) edges.push_back(k.edge_vertices(EdgeHandle(e)));
+            std::vector<EdgeHandle> face_edges;
+            for (std::size_t f = 0; f < k.n_faces(); ++f)
+                for (EdgeHandle e : k.face_edges(FaceHandle(f))) face_edges.push_back(e);
+            EXPECT_TRUE(edges == want->vertices) << threads << " threads";
+            EXPECT_TRUE(face_edges == want->face_edges) << threads << " threads";
+        });
+    }
 }
 
 TEST(TopologyComplex, LargeBoxHasExactCounts) {

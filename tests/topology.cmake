@@ -1,5 +1,6 @@
 dualhex_add_test(test_cube_symmetry SOURCES test_cube_symmetry.cpp DEPS dualhex::topology)
 dualhex_add_test(test_topology_complex SOURCES test_topology_complex.cpp DEPS dualhex::topology)
+dualhex_add_test(test_topology_dual_cell_cube SOURCES test_topology_dual_cell_cube.cpp DEPS dualhex::topology)
 dualhex_add_test(test_topology_validation SOURCES test_topology_validation.cpp DEPS dualhex::topology)
 dualhex_add_test(test_topology_properties SOURCES test_topology_properties.cpp DEPS dualhex::topology)
 dualhex_add_test(test_topology_progress SOURCES test_topology_progress.cpp DEPS dualhex::topology)

@@ -56,14 +56,13 @@ bool same_cycle(std::span<const VertexHandle> a, std::span<const VertexHandle> b
     return true;
 }
 
-void emit_chunk(Chunk& chunk, const EmitLeaf& emit) {
+void emit_chunk(Chunk& chunk, const EmitRange& emit) {
     const std::size_t m = chunk.end - chunk.begin;
-    chunk.builder.reserve(m + m / 2, 4 * m, m + m / 2);
+    // Hash room for a quarter of the points: most are corners, welded densely by the caller.
+    chunk.builder.reserve(m + m / 2, 4 * m, m + m / 2, m / 4);
     chunk.leaf_cells.reserve(m);
-    for (std::size_t n = chunk.begin; n < chunk.end; ++n) {
-        emit(chunk.builder, n);
-        chunk.leaf_cells.push_back(static_cast<std::uint32_t>(chunk.builder.n_cells()));
-    }
+    emit(chunk.builder, chunk.begin, chunk.end,
+         [&] { chunk.leaf_cells.push_back(static_cast<std::uint32_t>(chunk.builder.n_cells())); });
 }
 
 // Vertices: owners by lattice point, then ids (owned: consecutive per chunk in chunk order).
@@ -184,7 +183,7 @@ void number_faces(Chunks& chunks) {
 
 }  // namespace
 
-CellComplex weld_chunks(std::size_t n_leaves, std::size_t chunk_leaves, const EmitLeaf& emit,
+CellComplex weld_chunks(std::size_t n_leaves, std::size_t chunk_leaves, const EmitRange& emit,
                         std::vector<std::uint32_t>& leaf_cells) {
     Chunks chunks((n_leaves + chunk_leaves - 1) / std::max<std::size_t>(chunk_leaves, 1));
     for (std::size_t c = 0; c < chunks.size(); ++c) {

@@ -22,13 +22,15 @@
 
 namespace dualhex::detail {
 
-/// Emits leaf n's cells into the builder (called for every leaf, from several threads at
-/// once but never twice for one builder at the same time).
-using EmitLeaf = std::function<void(ComplexBuilder& builder, std::size_t leaf)>;
+/// Emits the cells of leaves [begin, end), in leaf order, into the builder, calling
+/// leaf_done() after each leaf (called once per chunk, for several chunks at once; a range
+/// lets the caller keep per-chunk state, e.g. a dense corner welder over the chunk's box).
+using EmitRange = std::function<void(ComplexBuilder& builder, std::size_t begin, std::size_t end,
+                                     const std::function<void()>& leaf_done)>;
 
 /// The welded complex of leaves [0, n_leaves); leaf_cells gets n_leaves + 1 offsets
 /// (cells of leaf n: [leaf_cells[n], leaf_cells[n + 1])).
-[[nodiscard]] CellComplex weld_chunks(std::size_t n_leaves, std::size_t chunk_leaves, const EmitLeaf& emit,
+[[nodiscard]] CellComplex weld_chunks(std::size_t n_leaves, std::size_t chunk_leaves, const EmitRange& emit,
                                       std::vector<std::uint32_t>& leaf_cells);
 
 }  // namespace dualhex::detail

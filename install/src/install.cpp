@@ -11,6 +11,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <climits>
+#include <cstdint>
+#include <functional>
 #include <mutex>
 #include <unordered_map>
 
@@ -172,6 +175,22 @@ CellComplex weld_serial(const LeafEmitter& emitter, std::size_t n_leaves, int ma
     return std::move(builder).build();
 }
 
+// The finest-level corner indices spanned by leaves [begin, end) (inclusive box).
+std::pair<std::array<std::int64_t, 3>, std::array<std::int64_t, 3>> corner_box(const std::vector<Leaf>& leaves, std::size_t begin,
+                                                                                std::size_t end, int max_level) {
+    std::array<std::int64_t, 3> lo{INT64_MAX, INT64_MAX, INT64_MAX}, hi{INT64_MIN, INT64_MIN, INT64_MIN};
+    for (std::size_t n = begin; n < end; ++n) {
+        const Leaf& leaf = leaves[n];
+        const std::int64_t s = std::int64_t{1} << (max_level - leaf.level);
+        const std::array<std::int64_t, 3> at{leaf.i * s, leaf.j * s, leaf.k * s};
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], at[a]);
+            hi[a] = std::max(hi[a], at[a] + s);
+        }
+    }
+    return {lo, hi};
+}
+
 }  // namespace
 
 InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const ElementLibrary& library,
@@ -193,13 +212,17 @@ InstallResult install(const LeafGrid& grid, const TransitionRule& rule, const El
         out.complex = weld_serial(emitter, n_leaves, out.max_level, out.leaf_cells);
         return out;
     }
-    const std::int64_t U = out.unit;
+    const std::vector<Leaf>& leaves = grid.leaves();
     out.complex = detail::weld_chunks(
         n_leaves, chunk_leaves(n_leaves, threads),
-        [&](ComplexBuilder& builder, std::size_t n) {
-            const auto weld = [&](const LatticePoint& p) { return builder.add_vertex(p); };
-            const auto corner = [&](std::int64_t x, std::int64_t y, std::int64_t z) { return builder.add_vertex({x * U, y * U, z * U}); };
-            emitter.emit(builder, n, weld, corner);
+        [&](ComplexBuilder& builder, std::size_t begin, std::size_t end, const std::function<void()>& leaf_done) {
+            auto [lo, hi] = corner_box(leaves, begin, end, out.max_level);
+            CornerWelder weld(builder, emitter.unit(), lo, hi, end - begin);
+            const auto corner = [&](std::int64_t x, std::int64_t y, std::int64_t z) { return weld.corner(x, y, z); };
+            for (std::size_t n = begin; n < end; ++n) {
+                emitter.emit(builder, n, weld, corner);
+                leaf_done();
+            }
         },
         out.leaf_cells);
     return out;

@@ -47,35 +47,20 @@ struct Tables {
     std::vector<std::uint32_t> face_dual, edge_dual, vertex_dual;
 };
 
-RationalPoint huge_cell_centroid(const CellComplex& k, CellHandle c, std::vector<VertexHandle>& scratch) {
-    scratch.clear();
-    for (HalfFaceHandle h : k.cell_halffaces(c))
-        for (VertexHandle v : k.face_vertices(h.face())) scratch.push_back(v);
-    std::sort(scratch.begin(), scratch.end());
-    RationalPoint r{{0, 0, 0}, 0};
-    for (std::size_t i = 0; i < scratch.size(); ++i)
-        if (i == 0 || scratch[i] != scratch[i - 1]) {
-            r.sum = r.sum + k.position(scratch[i]);
+// Sum and number of the distinct vertices of every cell (its dual vertex's centroid): each
+// vertex added to the cells Incidence lists it in (once per cell). One pass over the
+// vertex -> cells relation, written in vertex order (serial: a few adds per vertex-cell
+// pair, no per-cell deduplication); exact sums, so the same as any per-cell order.
+void cell_centroids(const CellComplex& k, const Incidence& inc, std::vector<RationalPoint>& points) {
+    for (std::size_t c = 0; c < k.n_cells(); ++c) points[c] = {{0, 0, 0}, 0};
+    for (std::size_t v = 0; v < k.n_vertices(); ++v) {
+        const LatticePoint& p = k.position(VertexHandle(v));
+        for (CellHandle c : inc.vertex_cells(VertexHandle(v))) {
+            RationalPoint& r = points[c.index()];
+            r.sum = r.sum + p;
             ++r.denominator;
         }
-    return r;
-}
-
-// Sum and number of the distinct vertices of cell c (its dual vertex's centroid), deduplicated
-// in a small array (a cell has few; a sorted copy only for huge cells).
-RationalPoint cell_centroid(const CellComplex& k, CellHandle c, std::vector<VertexHandle>& scratch) {
-    std::array<VertexHandle, 48> seen;
-    std::size_t n = 0;
-    RationalPoint r{{0, 0, 0}, 0};
-    for (HalfFaceHandle h : k.cell_halffaces(c))
-        for (VertexHandle v : k.face_vertices(h.face())) {
-            if (std::find(seen.begin(), seen.begin() + static_cast<std::ptrdiff_t>(n), v) != seen.begin() + static_cast<std::ptrdiff_t>(n)) continue;
-            if (n == seen.size()) return huge_cell_centroid(k, c, scratch);
-            seen[n++] = v;
-            r.sum = r.sum + k.position(v);
-            ++r.denominator;
-        }
-    return r;
+    }
 }
 
 // Vertices (cells) per parallel task: any split gives the same result (each has its own slot).
@@ -107,13 +92,8 @@ public:
         out.points.resize(nc);
         out.kind.assign(nc, DualVertexKind::Cell);
         out.primal.resize(nc);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-            std::vector<VertexHandle> scratch;
-            for (std::size_t c = r.begin(); c != r.end(); ++c) {
-                out.points[c] = cell_centroid(k_, CellHandle(c), scratch);
-                out.primal[c] = static_cast<std::uint32_t>(c);
-            }
-        });
+        cell_centroids(k_, inc_, out.points);
+        for (std::size_t c = 0; c < nc; ++c) out.primal[c] = static_cast<std::uint32_t>(c);
 
         // Vertex planes: bit 2a (lo side) / 2a+1 (hi side) of axis a.
         vertex_planes_.resize(nv);
