@@ -3,7 +3,10 @@
 // with the largest level spread at a point installed and checked.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 
 #include "dualhex/checkers/compositional_weak.hpp"
@@ -76,6 +79,8 @@ TEST(WeakLemmas, HoldForTheWeakRule) {
     EXPECT_EQ(r.visible_contexts, 4096);  // 9 octant bits (own coarse) x 3 edge bits
     EXPECT_EQ(r.placed + r.plain + r.refused, r.visible_contexts);
     EXPECT_EQ(r.refused, 0);
+    EXPECT_EQ(r.plain, r.lemma_contexts);  // plain exactly when nothing at P is fine
+    EXPECT_EQ(r.mr_contexts, 640);         // pinned: a change of the rule shows here
     EXPECT_EQ(r.nonconcave_ignored, r.nonconcave_contexts);
     EXPECT_GT(r.nonconcave_contexts, 0);
     EXPECT_GT(r.mr_contexts, 0);
@@ -113,34 +118,57 @@ TEST(WeakLemmas, WrongWeakRulesAreCaught) {
     EXPECT_NE(right.elements.at("E-MR"), wrong.elements.at("E-MR"));
 }
 
-// Lemma S of proofs/README.md: at a point, weak balance allows leaves of four consecutive
-// levels, and the least paired weakly balanced refinement reaching level m+3 at the corner
-// of a level-m leaf keeps that leaf: the spread 3 is attained.
-TEST(WeakSpread, FourLevelsMeetAtAPoint) {
-    const int m = 2;
-    const LeafGrid grid = spread_three_grid(m);
-    ASSERT_TRUE(is_paired(grid).ok);
-    ASSERT_TRUE(is_weakly_balanced(grid).ok);
-    EXPECT_FALSE(is_strongly_balanced(grid).ok);
-    const std::vector<int> at = levels_at(grid, {2, 2, 2}, m);
-    ASSERT_EQ(at.size(), 8u);
-    EXPECT_EQ(at, (std::vector<int>{m, m + 1, m + 1, m + 1, m + 2, m + 2, m + 2, m + 3}));
+// W3 of proofs/README.md: at a point, weak balance allows leaves of four consecutive levels.
+// Over the 8 octant cubes around a point, the level assignments 0..3 with face-adjacent
+// octants within one level are the 487 weak configurations and 8 more, the four-level ones:
+// one octant 0, the opposite one 3 (level = 3 - distance in the cube graph).
+TEST(WeakSpread, TheFourLevelOctantAssignments) {
+    int all = 0, four = 0;
+    for (int code = 0; code < 1 << 16; ++code) {
+        std::array<int, 8> lv{};
+        for (int b = 0; b < 8; ++b) lv[static_cast<std::size_t>(b)] = (code >> (2 * b)) & 3;
+        bool ok = *std::min_element(lv.begin(), lv.end()) == 0;
+        for (int b = 0; b < 8 && ok; ++b)
+            for (int a = 0; a < 3; ++a) ok = ok && std::abs(lv[static_cast<std::size_t>(b)] - lv[static_cast<std::size_t>(b ^ (1 << a))]) <= 1;
+        if (!ok) continue;
+        ++all;
+        if (*std::max_element(lv.begin(), lv.end()) < 3) continue;
+        ++four;
+        const int c = static_cast<int>(std::find(lv.begin(), lv.end(), 3) - lv.begin());
+        for (int b = 0; b < 8; ++b) EXPECT_EQ(lv[static_cast<std::size_t>(b)], 3 - std::popcount(static_cast<unsigned>(b ^ c)));
+    }
+    EXPECT_EQ(all, 495);
+    EXPECT_EQ(four, 8);
 }
 
-// Tested, not proved: the weak rule installs that grid (elements on three levels at the
-// point: VC3-MR, E-MR, F) to a valid complex under both root policies.
-TEST(WeakSpread, TheWeakRuleInstallsIt) {
-    const LeafGrid grid = spread_three_grid(2);
-    for (OutsideRoot policy : {OutsideRoot::Coarse, OutsideRoot::Mirror}) {
-        InstallOptions options;
-        options.outside_root = policy;
-        const InstallResult installed = install(grid, WeakRule(), library(), options);
-        const auto used = installed.elements_used();
-        for (const char* name : {"VC3-MR", "E-MR", "F"}) EXPECT_GT(used.count(name), 0u) << name;
-        const InstallVerification v = verify_installation(installed);
-        EXPECT_TRUE(v.ok()) << v.summary();
-        EXPECT_GT(v.interior_vertices, 900u);
+// The least paired weakly balanced refinement reaching level m+3 at the corner of a level-m
+// leaf keeps that leaf: the spread 3 is attained, at each of the 8 corners.
+TEST(WeakSpread, FourLevelsMeetAtAPoint) {
+    const int m = 2;
+    for (int corner = 0; corner < 8; ++corner) {
+        const LeafGrid grid = spread_three_grid(m, corner);
+        ASSERT_TRUE(is_paired(grid).ok);
+        ASSERT_TRUE(is_weakly_balanced(grid).ok);
+        EXPECT_FALSE(is_strongly_balanced(grid).ok);
+        EXPECT_EQ(levels_at(grid, {2, 2, 2}, m), (std::vector<int>{m, m + 1, m + 1, m + 1, m + 2, m + 2, m + 2, m + 3}))
+            << corner;
     }
+}
+
+// Tested, not proved: the weak rule installs those grids (elements on three levels at the
+// point: VC3-MR, E-MR, F) to valid complexes under both root policies.
+TEST(WeakSpread, TheWeakRuleInstallsIt) {
+    for (int corner = 0; corner < 8; ++corner)
+        for (OutsideRoot policy : {OutsideRoot::Coarse, OutsideRoot::Mirror}) {
+            InstallOptions options;
+            options.outside_root = policy;
+            const InstallResult installed = install(spread_three_grid(2, corner), WeakRule(), library(), options);
+            const auto used = installed.elements_used();
+            for (const char* name : {"VC3-MR", "E-MR", "F"}) EXPECT_GT(used.count(name), 0u) << name << ' ' << corner;
+            const InstallVerification v = verify_installation(installed);
+            EXPECT_TRUE(v.ok()) << corner << ' ' << v.summary();
+            EXPECT_GT(v.interior_vertices, 900u);
+        }
 }
 
 // A weak rule with one MR element mis-oriented (E-MR reflected across x = y after its

@@ -102,22 +102,23 @@ WeakLemmaResult check_weak_lemmas(const TransitionRule& rule) {
     return r;
 }
 
-LeafGrid spread_three_grid(int m) {
+LeafGrid spread_three_grid(int m, int corner) {
     if (m < 2 || m > 12) throw std::invalid_argument("spread_three_grid: m must be in 2..12");
-    std::vector<Leaf> leaves;
+    if (corner < 0 || corner > 7) throw std::invalid_argument("spread_three_grid: corner must be in 0..7");
     const std::int64_t n = std::int64_t{1} << m, p = n / 2;
-    // Uniform level m, with the cells at P's (+,+,+) side split down to level m + 3.
+    const auto side = [corner](int a) { return (corner >> a) & 1; };  // 1: the deep cells lie at x_a >= P
+    const auto deep = [&](int level) {  // the level-`level` cell at P on the deep side
+        const std::int64_t q = p << (level - m);
+        return Leaf{level, q - 1 + side(0), q - 1 + side(1), q - 1 + side(2)};
+    };
+    std::vector<Leaf> leaves;
     for (std::int64_t i = 0; i < n; ++i)
         for (std::int64_t j = 0; j < n; ++j)
             for (std::int64_t k = 0; k < n; ++k)
-                if (!(i == p && j == p && k == p)) leaves.push_back({m, i, j, k});
-    for (int level = m + 1; level <= m + 3; ++level) {
-        const std::int64_t q = p << (level - m);  // P in level units
-        for (int c = 0; c < 8; ++c) {
-            const Leaf child{level, q + (c & 1), q + ((c >> 1) & 1), q + ((c >> 2) & 1)};
-            if (c != 0 || level == m + 3) leaves.push_back(child);
-        }
-    }
+                if (Leaf{m, i, j, k} != deep(m)) leaves.push_back({m, i, j, k});
+    for (int level = m + 1; level <= m + 3; ++level)
+        for (const Leaf& child : children(deep(level - 1)))
+            if (child != deep(level) || level == m + 3) leaves.push_back(child);
     return pair(LeafGrid(std::move(leaves)), Balance::Weak);
 }
 

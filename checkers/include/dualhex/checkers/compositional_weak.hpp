@@ -41,12 +41,13 @@ struct WeakLemmaResult {
 [[nodiscard]] WeakLemmaResult check_weak_lemmas(const TransitionRule& rule);
 
 /// The grid of "the level spread at a point": a weakly balanced paired grid (root level 0,
-/// coarse level `m` >= 2) in which the point P = (2^(m-1), ...) (level-m units: the root's
-/// centre) lies in a level-m leaf, in level-(m+1) and level-(m+2) leaves and in a level-(m+3)
-/// leaf — the largest spread weak balance allows at a point (proofs/README.md, lemma S).
-/// The least paired weakly balanced refinement of the uniform level-m grid with the level-(m+3)
-/// cell at P's (+,+,+) side refined to.
-[[nodiscard]] LeafGrid spread_three_grid(int m);
+/// coarse level `m` >= 2) in which the root's centre P (2^(m-1) in level-m units) lies in
+/// leaves of the four levels m..m+3, the largest spread weak balance allows at a point
+/// (proofs/README.md, W3): the least paired weakly balanced refinement of the uniform
+/// level-m grid with the cells at P on the side `corner` (bit a set: x_a >= P_a) split down
+/// to level m+3. Its 8 octant cubes at P have the levels of the only four-level octant
+/// assignments (one per corner).
+[[nodiscard]] LeafGrid spread_three_grid(int m, int corner = 7);
 
 /// What a window B(g) (2x2x2 level-m cells around g, proofs/README.md "Compositional
 /// argument", step 5) reads once its level-m cells may hold level-(m+1) leaves with elements
