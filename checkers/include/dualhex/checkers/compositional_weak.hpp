@@ -11,10 +11,15 @@
 #include <map>
 #include <string>
 
+#include <filesystem>
+
+#include "dualhex/checkers/certificate.hpp"
 #include "dualhex/grid/leaf_grid.hpp"
 #include "dualhex/schemes/placement.hpp"
 
 namespace dualhex {
+
+class ElementLibrary;
 
 struct WeakLemmaResult {
     std::string rule;
@@ -48,6 +53,12 @@ struct WeakLemmaResult {
 /// to level m+3. Its 8 octant cubes at P have the levels of the only four-level octant
 /// assignments (one per corner).
 [[nodiscard]] LeafGrid spread_three_grid(int m, int corner = 7);
+
+/// The 8 grids spread_three_grid(2, corner), installed with the weak rule (outside root
+/// coarse) and checked, as 8 `installation` certificates over the root box in
+/// dir/spread-0-7.cert (covers: the corner), manifest `covers 8`; throws if one fails.
+/// What `dualhex certify` writes into proofs/certificates/weak_spread/.
+CertificateSet certify_spread_grids(const ElementLibrary& library, const std::filesystem::path& dir);
 
 /// What a window B(g) (2x2x2 level-m cells around g, proofs/README.md "Compositional
 /// argument", step 5) reads once its level-m cells may hold level-(m+1) leaves with elements
