@@ -3,15 +3,14 @@
 #include "dualhex/checkers/compositional_weak.hpp"
 
 #include <algorithm>
+#include <map>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/install/element_templates.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
-
-#include <map>
-#include <set>
 
 namespace dualhex {
 namespace {
@@ -132,7 +131,6 @@ std::vector<WeakWindowReads> weak_window_reads() {
         std::set<Index3> octants;
         std::map<Index3, int> readers;  // level-m cell -> number of leaves reading it
         std::set<LatticePoint> points;
-        const auto read = [&](std::set<Index3>& cells, const Index3& c) { cells.insert(c); };
         for (int n = 0; n < 8; ++n) {
             const LatticePoint cell{r.parity[0] - 1 + (n & 1), r.parity[1] - 1 + ((n >> 1) & 1), r.parity[2] - 1 + ((n >> 2) & 1)};
             // the level-m leaf in this cell: its octants (R(t)), its own cell and 3 edge cells
@@ -148,7 +146,7 @@ std::vector<WeakWindowReads> weak_window_reads() {
                     e[static_cast<std::size_t>(u)] =
                         ctx.application_point[u] + (ctx.direction[static_cast<std::size_t>(u)] > 0 ? local : -local - 1);
                 }
-                read(mine, e);
+                mine.insert(e);
             }
             for (const Index3& c : mine) ++readers[c];
             // its 8 level-(m+1) children: their own cell and their 10 reach cells (level m)
@@ -159,7 +157,7 @@ std::vector<WeakWindowReads> weak_window_reads() {
                 std::set<Index3> theirs{{cell.x, cell.y, cell.z}};
                 for (int b = 0; b < 64; ++b)
                     if ((strong_reach() >> b) & 1U)
-                        read(theirs, detail::world_octant(cc, {(b & 3) - 2, ((b >> 2) & 3) - 2, ((b >> 4) & 3) - 2}));
+                        theirs.insert(detail::world_octant(cc, {(b & 3) - 2, ((b >> 2) & 3) - 2, ((b >> 4) & 3) - 2}));
                 for (const Index3& c : theirs) ++readers[c];
             }
         }
