@@ -1,7 +1,8 @@
 // dualhex certify --out DIR: writes the certificates of the element library, the 256
 // configurations under the strong rule (DIR), the 487 weakly balanced ones under the weak rule
 // (DIR/weak), the 14 crossing variants (DIR/variants), the compositional windows (DIR/windows)
-// and the root-boundary half windows (DIR/boundary), each directory with its manifest
+// the root-boundary half windows (DIR/boundary) and the eight four-level weak grids
+// (DIR/weak_spread), each directory with its manifest
 // (format and checker: proofs/README.md). The certificates are untrusted output;
 // `dualhex-proof-checker DIR/manifest` (and DIR/weak/manifest, DIR/variants/manifest)
 // re-checks them. Without --force DIR must not exist or be empty.
@@ -17,7 +18,7 @@ namespace dualhex::app {
 void register_certify(CLI::App& app) {
     auto* sub = app.add_subcommand("certify",
                                    "Write certificates (elements, the 256 strong and 487 weak configurations, the 14 "
-                                   "crossing variants, the compositional and root-boundary windows) for the "
+                                   "crossing variants, the compositional and root-boundary windows, the four-level weak grids) for the "
                                    "independent checker dualhex-proof-checker");
     struct Options {
         std::string out, elements;

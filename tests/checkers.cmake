@@ -1,5 +1,6 @@
 # tests for the checkers layer
 dualhex_add_test(test_checkers_configurations SOURCES test_checkers_configurations.cpp DEPS dualhex::checkers)
 dualhex_add_test(test_compositional SOURCES test_compositional.cpp DEPS dualhex::checkers)
+dualhex_add_test(test_compositional_weak SOURCES test_compositional_weak.cpp DEPS dualhex::checkers)
 dualhex_add_test(test_compositional_boundary SOURCES test_compositional_boundary.cpp DEPS dualhex::checkers)
 dualhex_add_test(test_root_boundary_grids SOURCES test_root_boundary_grids.cpp DEPS dualhex::checkers)

@@ -11,6 +11,7 @@ dualhex_check_shipped(proofs_shipped_weak_certificates weak/manifest)
 dualhex_check_shipped(proofs_shipped_variant_certificates variants/manifest)
 dualhex_check_shipped(proofs_shipped_window_certificates windows/manifest)
 dualhex_check_shipped(proofs_shipped_boundary_certificates boundary/manifest)
+dualhex_check_shipped(proofs_shipped_weak_spread_certificates weak_spread/manifest)
 
 # Freshness (regenerate, compare with the manifest) and adversarial mutations.
 dualhex_add_test(test_proofs_certificates SOURCES test_proofs_certificates.cpp test_proofs_freshness.cpp

@@ -2,6 +2,7 @@
 // proofs/README.md). Untrusted: the claims come from dualhex's topology code; the
 // independent checker in proofs/checker decides whether they hold.
 #include "dualhex/checkers/certificate.hpp"
+#include "dualhex/checkers/compositional_weak.hpp"
 #include "dualhex/checkers/boundary_certificates.hpp"
 #include "dualhex/checkers/window_certificates.hpp"
 
@@ -196,6 +197,7 @@ CertifyResult certify_library(const ElementLibrary& library, const std::filesyst
     result.sets.push_back(certify_windows(StrongRule{}, library, dir / "windows", 100, progress));
     report_progress(progress, "boundary windows", 0, 1);
     result.sets.push_back(certify_boundary_windows(StrongRule{}, library, dir / "boundary"));
+    result.sets.push_back(certify_spread_grids(library, dir / "weak_spread"));
     return result;
 }
 

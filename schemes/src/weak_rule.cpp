@@ -36,7 +36,22 @@ unsigned mr_edges(const LeafContext& c) {
     return edges;
 }
 
-std::optional<Placement> WeakRule::place(const LeafContext& context) const {
+LeafContext weak_visible(const LeafContext& context) {
+    LeafContext visible = context;
+    visible.neighbourhood &= strong_reach();
+    std::uint8_t concave = 0;
+    for (int a = 0; a < 3; ++a) {
+        std::array<int, 3> fb{0, 0, 0}, fd{0, 0, 0};
+        fb[static_cast<std::size_t>((a + 1) % 3)] = -1;
+        fd[static_cast<std::size_t>((a + 2) % 3)] = -1;
+        if (context.fine(fb[0], fb[1], fb[2]) && context.fine(fd[0], fd[1], fd[2])) concave |= static_cast<std::uint8_t>(1U << a);
+    }
+    visible.edge_two_finer &= concave;
+    return visible;
+}
+
+std::optional<Placement> WeakRule::place(const LeafContext& full) const {
+    const LeafContext context = weak_visible(full);  // what the rule may see, nothing else
     const unsigned mr = mr_edges(context);
     if (mr == 0) return StrongRule().place(context);
     const Signature need = required_signature(context);
@@ -54,7 +69,7 @@ std::optional<Placement> WeakRule::place(const LeafContext& context) const {
         }
     }
     throw UnknownPatternError("no weakly balanced element has signature " + need.to_string() + " with truncated edges " +
-                              std::to_string(mr) + " (" + context.describe() + ")");
+                              std::to_string(mr) + " (" + full.describe() + ")");
 }
 
 }  // namespace dualhex
