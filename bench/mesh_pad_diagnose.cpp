@@ -5,6 +5,7 @@
 //   mesh_pad_diagnose MODEL [--preset coarse|medium|fine] [--threshold 0.3]
 //                     [--core-smoothing N] [--core-floor F] [--normal-smoothing N]  (pad.hpp options)
 //                     [--rescue N]  (optimise.hpp rescue_rounds)
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -40,7 +41,10 @@ int main(int argc, char** argv) {
         static_cast<MeshSizeOptions&>(options) = mesh_preset(*parsed);
         options.observe = [&](std::string_view stage, const MeshPipelineResult& r, const QualityState& s) {
             const PadDiagnosis d = diagnose_pad(r.mesh, r.core_hexes, r.constraints, s.scaled_jacobian, threshold);
-            std::printf("%-9s min %.3f  %s\n", std::string(stage).c_str(), geometry::summarize(s.scaled_jacobian).min,
+            const double half = static_cast<double>(std::count_if(s.scaled_jacobian.begin(), s.scaled_jacobian.end(),
+                                                                   [](double q) { return !(q >= 0.5); }));
+            std::printf("%-9s min %.3f  < 0.5: %.2f %%  %s\n", std::string(stage).c_str(),
+                        geometry::summarize(s.scaled_jacobian).min, 100.0 * half / static_cast<double>(s.scaled_jacobian.size()),
                         d.summary().c_str());
         };
         const MeshPipelineResult r = mesh_surface(tree, options);
