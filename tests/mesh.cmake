@@ -32,6 +32,8 @@ dualhex_add_test(test_mesher_features SOURCES test_mesher_features.cpp DEPS dual
 # the mesher's core, pad, optimise and check stages on hand-made meshes
 dualhex_add_test(test_mesher_optimise SOURCES test_mesher_optimise.cpp DEPS dualhex::mesher)
 dualhex_add_test(test_mesher_pad SOURCES test_mesher_pad.cpp DEPS dualhex::mesher)
+# the pad on folded cores, the bad-hex diagnostic (mesher/pad_diagnosis.hpp)
+dualhex_add_test(test_mesher_pad_quality SOURCES test_mesher_pad_quality.cpp DEPS dualhex::mesher)
 # the features stage's refusal of inverting snaps, the optimiser's deterministic work budget
 dualhex_add_test(test_mesher_feature_refusal SOURCES test_mesher_feature_refusal.cpp DEPS dualhex::mesher)
 dualhex_add_test(test_mesher_budget SOURCES test_mesher_budget.cpp DEPS dualhex::mesher TBB::tbb)

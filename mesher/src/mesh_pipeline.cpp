@@ -11,6 +11,7 @@
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/mesher/cell_levels.hpp"
+#include "dualhex/mesher/core_boundary_smooth.hpp"
 #include "dualhex/mesher/feature_patches.hpp"
 #include "dualhex/mesher/feature_refusal.hpp"
 #include "dualhex/mesher/install_stage.hpp"
@@ -42,6 +43,11 @@ auto timed(const MeshPipelineOptions& options, std::string_view name, double& ms
         ~Stop() { ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
     } stop{t0, ms};
     return stage();
+}
+
+void observe(const MeshPipelineOptions& options, std::string_view stage, const MeshPipelineResult& result,
+             const QualityState& state) {
+    if (options.observe) options.observe(stage, result, state);
 }
 
 void check_options(const MeshPipelineOptions& options) {
@@ -97,6 +103,7 @@ CoreSelection core_stage(const ClippedDual& dual, const InstallResult& installed
 
 // Stage "pad": result.core.mesh padded into result.mesh, with its roles and figures.
 void pad_stage(MeshPipelineResult& result, const AabbTree& tree, const PadOptions& options) {
+    (void)smooth_core_boundary(result.core.mesh, options.core_smoothing, options.core_smoothing_floor);
     PadResult padded = pad_layer(result.core.mesh, tree, options);
     result.core.mesh = {};
     result.mesh = std::move(padded.mesh);
@@ -165,6 +172,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         state = quality_state(result.mesh);
     });
     result.inverted_after_pad = state.inverted;
+    observe(options, "pad", result, state);
     result.cell_data.level = padded_levels(result.mesh, result.core_hexes, core_levels);
 
     geometry::FeatureSet features;
@@ -189,12 +197,15 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         result.features.inverted_after = state.inverted;
         snapped.points = result.mesh.points;
     });
+    observe(options, "features", result, state);
     const VertexDomain domain{tree, curves, result.constraints};
     timed(options, "smooth", ms.smooth, [&] { smooth_stage(result, domain, options.smooth_iterations, state); });
+    observe(options, "smooth", result, state);
     HexMesh& mesh = result.mesh;
     result.optimise = timed(options, "optimise", ms.optimise, [&] {
         return optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
     });
+    observe(options, "optimise", result, state);
     result.topology = timed(options, "check", ms.check, [&] {
         result.inverted_hexes.clear();  // never success for an inverted mesh
         for (std::size_t h = 0; h < state.scaled_jacobian.size(); ++h)

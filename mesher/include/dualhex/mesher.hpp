@@ -15,6 +15,7 @@
 #include "dualhex/mesher/smooth.hpp"
 #include "dualhex/mesher/check_topology.hpp"
 #include "dualhex/mesher/constrained_position.hpp"
+#include "dualhex/mesher/core_boundary_smooth.hpp"
 #include "dualhex/mesher/optimise.hpp"
 #include "dualhex/mesher/pad.hpp"
 #include "dualhex/mesher/select_core.hpp"

@@ -33,6 +33,7 @@
 #include <map>
 #include <vector>
 #include <string>
+#include <string_view>
 
 #include "dualhex/geometry/aabb_tree.hpp"
 #include "dualhex/geometry/hex_output.hpp"
@@ -68,6 +69,8 @@ using geometry::TriangleSurface;
 /// that rounding (another formula, the written file's 17 digits) may make it inverted.
 inline constexpr double kFlatScaledJacobian = 1e-6;
 
+struct MeshPipelineResult;
+
 /// The size options (size, size_rel, min/max depth, ...: mesh_size.hpp) and the rest.
 struct MeshPipelineOptions : MeshSizeOptions {
     Balance balance = Balance::Weak;
@@ -85,6 +88,10 @@ struct MeshPipelineOptions : MeshSizeOptions {
     /// Called before each stage with its short name ("octree", "pair", ...) and the number
     /// of stages done of all of them (may be empty).
     Progress progress;
+    /// Called after the moving stages ("pad", "features", "smooth", "optimise") with the
+    /// result so far (mesh, constraints, core_hexes) and the quality state (may be empty;
+    /// diagnostics such as pad_diagnosis.hpp).
+    std::function<void(std::string_view, const MeshPipelineResult&, const QualityState&)> observe;
 };
 
 /// Milliseconds per stage. balance_pair = balance + pair: the balanced grid first, then the

@@ -31,6 +31,11 @@
 namespace dualhex::mesher {
 
 struct PadOptions {
+    /// Sweeps of core_boundary_smooth.hpp the pipeline runs on the core before the pad, and
+    /// their quality floor for core hexes. Off (0) by default: it halves the bad pad hexes
+    /// after the pad but not at the end of the pipeline (mesher/README.md, measured).
+    int core_smoothing = 0;
+    double core_smoothing_floor = 0.5;
     int normal_smoothing = 3;
     double ray_limit = 2.0;
 };
