@@ -41,6 +41,7 @@ nlohmann::json far_points_json(const mesher::MeshPipelineResult& r, double diago
         for (std::size_t i = 0; i < mesher::kCoreFates; ++i)
             if (f.fates[i] > 0) fates[mesher::core_fate_name(static_cast<mesher::CoreFate>(i))] = f.fates[i];
         out.push_back({{"point", {f.point.x(), f.point.y(), f.point.z()}},
+                       {"side", f.on_hex_boundary ? "hex_boundary" : "input"},
                        {"distance", diagonal > 0 ? f.distance / diagonal : 0},
                        {"cause", mesher::core_fate_name(f.cause)},
                        {"dual_hexes", fates}});
@@ -173,6 +174,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"repair_manifold", r.core.repair_manifold},
                       {"kept_components", r.core.kept_components},
                       {"dropped_components", r.core.dropped_components},
+                      {"rule_euler", r.core.rule_euler},
                       {"topology_controlled", r.core.topology_controlled},
                       {"topology_dropped", r.core.topology_dropped},
                       {"topology_fill", r.core.topology_fill},

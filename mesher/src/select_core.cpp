@@ -150,10 +150,13 @@ void keep_largest_parts(const std::vector<std::array<int, 8>>& cells, const std:
     }
 }
 
-bool has_topology(const geometry::HexMesh& mesh, const std::vector<geometry::SurfaceComponent>& input) {
-    const geometry::HexTopology t = geometry::check_hex_topology(mesh, 0);
+bool has_topology(const geometry::HexTopology& t, const std::vector<geometry::SurfaceComponent>& input) {
     return t.non_manifold_edges == 0 && t.non_manifold_vertices == 0 &&
            geometry::compare_topology(t.boundary_components, input).same;
+}
+
+bool has_topology(const geometry::HexMesh& mesh, const std::vector<geometry::SurfaceComponent>& input) {
+    return has_topology(geometry::check_hex_topology(mesh, 0), input);
 }
 
 }  // namespace
@@ -168,24 +171,26 @@ std::size_t count_in(const std::vector<std::uint32_t>& hexes, const std::vector<
 
 // The rule's selection had another topology than the input, or parts beyond the input's
 // number: regrown by topology-controlled steps, once cutting (candidates only) and once
-// through fill hexes (closing tunnels, joining parts); of the results with the input's
+// through fill hexes (closing tunnels, joining parts; first, and alone if it keeps every
+// rule hex); of the results with the input's
 // topology (the rule's own included), the one keeping the most of the rule's hexes, then
 // the fewest fill hexes, is taken.
 void choose_regrowth(const std::vector<std::array<int, 8>>& cells, const std::vector<char>& rule,
                      const std::vector<double>& score, const std::vector<double>& fill_score,
                      const EmbeddedDual& embedded, const std::vector<geometry::SurfaceComponent>& input,
-                     CoreSelection& out) {
+                     bool rule_valid, CoreSelection& out) {
     const std::size_t keep = std::max<std::size_t>(1, input.size());
     std::size_t handles = 0;
     for (const auto& c : input) handles += static_cast<std::size_t>(std::max<std::int64_t>(0, (2 - c.euler()) / 2));
     std::vector<char> fill(cells.size(), 0);
     for (std::size_t h = 0; h < cells.size(); ++h) fill[h] = !rule[h] && fill_score[h] > 0;
     const std::size_t rule_kept = out.mesh.hexes.size();
-    const bool rule_valid = has_topology(out.mesh, input);
     CoreSelection best = out;
     std::size_t best_rule = rule_valid ? rule_kept : 0, best_fill = 0;
     bool found = rule_valid;
-    for (const bool with_fill : {false, true}) {
+    const auto rule_total = static_cast<std::size_t>(std::count(rule.begin(), rule.end(), 1));
+    for (const bool with_fill : {true, false}) {  // cutting cannot beat a fill that kept every rule hex
+        if (found && best_rule == rule_total) break;
         const std::vector<char> grown = grow_core_with_topology(cells, embedded.points.size(), rule,
                                                                 with_fill ? fill : std::vector<char>{}, score, keep, handles);
         CoreSelection c = out;
@@ -275,9 +280,13 @@ CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded,
     const std::vector<char>& rule = repair.selected;
     std::vector<char> rule_core(m, 0);
     for (std::uint32_t h : out.dual_hex) rule_core[h] = 1;
-    if (control_topology && !out.mesh.hexes.empty() &&
-        !(out.dropped_components.empty() && has_topology(out.mesh, input)))
-        choose_regrowth(cells, rule, score, fill_score, embedded, input, out);
+    if (control_topology && !out.mesh.hexes.empty()) {
+        const geometry::HexTopology t = geometry::check_hex_topology(out.mesh, 0);
+        for (const auto& c : t.boundary_components) out.rule_euler.push_back(c.euler());
+        const bool rule_valid = has_topology(t, input);
+        if (!(rule_valid && out.dropped_components.empty()))
+            choose_regrowth(cells, rule, score, fill_score, embedded, input, rule_valid, out);
+    }
     set_fates(rule, selected, rule_core, out);
     return out;
 }

@@ -40,6 +40,9 @@ struct CoreSelection {
     std::size_t repair_remaining_defects = 0;  ///< non-manifold edges + vertices left
     std::vector<std::size_t> kept_components;     ///< hexes per kept component, decreasing
     std::vector<std::size_t> dropped_components;  ///< hexes per dropped component, decreasing
+    /// Euler characteristic per boundary component of the rule's kept parts (before any
+    /// regrowth): 2 - chi = twice the handles the regrowth must open or close.
+    std::vector<std::int64_t> rule_euler;
     bool topology_controlled = false;  ///< the rule's selection had the wrong topology; regrown (core_topology.hpp)
     std::size_t topology_dropped = 0;  ///< hexes of the rule's selection the regrowth left out
     std::size_t topology_fill = 0;     ///< fill hexes the regrowth kept (closing tunnels, joining parts)
