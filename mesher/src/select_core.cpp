@@ -36,22 +36,33 @@ EmbeddedDual embed_dual(const ClippedDual& dual, std::int64_t extent, const geom
     const std::size_t n = dual.points.size();
     EmbeddedDual out;
     out.points.reserve(n);
-    out.signed_distance.reserve(n);
-    for (const RationalPoint& rp : dual.points) {
-        const Eigen::Vector3d p =
-            root.origin + root.size * Eigen::Vector3d(rp.coordinate(0, ext), rp.coordinate(1, ext), rp.coordinate(2, ext));
-        out.points.push_back(p);
-        out.signed_distance.push_back(std::sqrt(tree.squared_distance(p)));
-    }
-    // Signs: a ray-parity test at one point per region, then spread along dual edges: if
-    // |p - q| < d(p), the segment pq stays in the open ball around p that the surface does
-    // not meet, so q is on p's side.
+    out.signed_distance.assign(n, 0.0);
+    for (const RationalPoint& rp : dual.points)
+        out.points.push_back(root.origin +
+                             root.size * Eigen::Vector3d(rp.coordinate(0, ext), rp.coordinate(1, ext), rp.coordinate(2, ext)));
     std::vector<std::vector<std::uint32_t>> neighbours(n);
     for (const auto& h : dual.hexes)
         for (const auto& e : geometry::kHexEdgeCorners) {
             neighbours[h[static_cast<std::size_t>(e[0])]].push_back(h[static_cast<std::size_t>(e[1])]);
             neighbours[h[static_cast<std::size_t>(e[1])]].push_back(h[static_cast<std::size_t>(e[0])]);
         }
+    // Distances, searched only up to kReach x the longest dual edge at the point: a point
+    // farther from the surface is that far at least (a valid bound for the sign spreading
+    // below); only inside points that far get their exact distance (the core's depth order
+    // needs it; outside, every hex around is outside whatever the value).
+    constexpr double kReach = 4.0;
+    std::vector<char> capped(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        double longest = 0;
+        for (std::uint32_t q : neighbours[i]) longest = std::max(longest, (out.points[q] - out.points[i]).norm());
+        const double reach = longest > 0 ? kReach * longest : INFINITY;
+        const geometry::ClosestPoint c = tree.closest_point(out.points[i], reach * reach);
+        capped[i] = c.triangle < 0 ? 1 : 0;
+        out.signed_distance[i] = std::sqrt(c.squared_distance);
+    }
+    // Signs: a ray-parity test at one point per region, then spread along dual edges: if
+    // |p - q| < d(p), the segment pq stays in the open ball around p that the surface does
+    // not meet, so q is on p's side.
     std::vector<signed char> sign(n, 0);
     std::vector<std::uint32_t> stack;
     for (std::size_t start = 0; start < n; ++start) {
@@ -68,6 +79,8 @@ EmbeddedDual embed_dual(const ClippedDual& dual, std::int64_t extent, const geom
                 }
         }
     }
+    for (std::size_t i = 0; i < n; ++i)
+        if (capped[i] && sign[i] > 0) out.signed_distance[i] = std::sqrt(tree.squared_distance(out.points[i]));
     for (std::size_t i = 0; i < n; ++i) out.signed_distance[i] *= sign[i];
     return out;
 }
