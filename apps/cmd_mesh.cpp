@@ -26,12 +26,28 @@ struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int smooth = 5;
     double feature_angle = 45.0;
-    double min_quality = 0.5, core_margin = 0.1, optimise_ms = 0, pad_ray_limit = 2.0;
+    double min_quality = 0.5, core_margin = 0.1, core_fill_margin = 0.02, optimise_ms = 0, pad_ray_limit = 2.0;
     double optimise_work = mesher::OptimiseOptions{}.work_per_vertex;
     double feature_min_chain = mesher::MeshPipelineOptions{}.feature_min_chain;
     bool json = false, force = false, accept_topology_change = false, no_progress = false;
     MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
+
+// The far surface points (mesh_report.hpp): where, how far (relative), why.
+nlohmann::json far_points_json(const mesher::MeshPipelineResult& r, double diagonal) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const mesher::FarSurfacePoint& f : r.far_points) {
+        nlohmann::json fates;
+        for (std::size_t i = 0; i < mesher::kCoreFates; ++i)
+            if (f.fates[i] > 0) fates[mesher::core_fate_name(static_cast<mesher::CoreFate>(i))] = f.fates[i];
+        out.push_back({{"point", {f.point.x(), f.point.y(), f.point.z()}},
+                       {"side", f.on_hex_boundary ? "hex_boundary" : "input"},
+                       {"distance", diagonal > 0 ? f.distance / diagonal : 0},
+                       {"cause", mesher::core_fate_name(f.cause)},
+                       {"dual_hexes", fates}});
+    }
+    return out;
+}
 
 void run_mesh(const MeshOptionsCli& opt) {
     const mesher::MeshSizeOptions size = resolve_size_options(opt.size);
@@ -66,6 +82,7 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.optimise.work_per_vertex = opt.optimise_work;
     options.optimise.min_quality = opt.min_quality;
     options.core.margin = opt.core_margin;
+    options.core.fill_margin = opt.core_fill_margin;
     options.optimise.time_limit_ms = opt.optimise_ms;
     options.pad.ray_limit = opt.pad_ray_limit;
     // The pipeline's stages, then writing the file: "[mesh 11/14: optimise] 71% ...".
@@ -157,8 +174,12 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"repair_manifold", r.core.repair_manifold},
                       {"kept_components", r.core.kept_components},
                       {"dropped_components", r.core.dropped_components},
+                      {"rule_euler", r.core.rule_euler},
                       {"topology_controlled", r.core.topology_controlled},
-                      {"topology_dropped", r.core.topology_dropped}}},
+                      {"topology_dropped", r.core.topology_dropped},
+                      {"topology_fill", r.core.topology_fill},
+                      {"topology_rejoined", r.core.topology_rejoined}}},
+                    {"far_surface_points", far_points_json(r, d.diagonal)},
                     {"pad",
                      {{"by_ray", r.padded_by_ray},
                       {"by_closest_point", r.padded_by_closest_point},
@@ -311,6 +332,9 @@ void register_mesh(CLI::App& app) {
     sub->add_option("--min-quality", opt->min_quality,
                     "Target minimum scaled Jacobian of the optimiser (default 0.5): optimise until reached or no progress")
         ->check(CLI::Range(0.0, 1.0));
+    sub->add_option("--core-fill-margin", opt->core_fill_margin,
+                    "Fill hexes (grown through to close tunnels and join thin parts of the core): corners at least "
+                    "this x their edge inside the surface (default 0.02; negative: no fill)");
     sub->add_option("--core-margin", opt->core_margin,
                     "Core hexes have all corners at least this times their mean edge inside the surface (default 0.1)")
         ->check(CLI::Range(0.0, 2.0));

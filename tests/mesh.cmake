@@ -38,3 +38,4 @@ dualhex_add_test(test_mesher_pad_quality SOURCES test_mesher_pad_quality.cpp DEP
 dualhex_add_test(test_mesher_feature_refusal SOURCES test_mesher_feature_refusal.cpp DEPS dualhex::mesher)
 dualhex_add_test(test_mesher_budget SOURCES test_mesher_budget.cpp DEPS dualhex::mesher TBB::tbb)
 dualhex_add_test(test_mesher_core_topology SOURCES test_mesher_core_topology.cpp DEPS dualhex::mesher)
+dualhex_add_test(test_mesher_core_fill SOURCES test_mesher_core_fill.cpp DEPS dualhex::mesher)

@@ -121,6 +121,13 @@ TEST(AabbTree, CubeQueriesAndRays) {
     EXPECT_NEAR(cp.squared_distance, 1.0, 1e-15);
     EXPECT_TRUE(cp.point.isApprox(Vector3d(0.5, 0.5, 1.0)));
     EXPECT_NEAR(tree.squared_distance({0.5, 0.5, 0.6}), 0.16, 1e-15);  // inside: to the top face
+    // A bounded query: the same answer below the bound, "none" (the bound, no triangle) above.
+    const auto near = tree.closest_point({0.5, 0.5, 2.0}, 1.5);
+    EXPECT_NEAR(near.squared_distance, 1.0, 1e-15);
+    EXPECT_GE(near.triangle, 0);
+    const auto none = tree.closest_point({0.5, 0.5, 2.0}, 0.5);
+    EXPECT_EQ(none.squared_distance, 0.5);
+    EXPECT_EQ(none.triangle, -1);
     EXPECT_FALSE(tree.intersects_box(AlignedBox3d(Vector3d::Constant(0.2), Vector3d::Constant(0.8))));
     EXPECT_TRUE(tree.intersects_box(AlignedBox3d(Vector3d::Constant(0.8), Vector3d::Constant(1.2))));
     const Vector3d dir = Vector3d(1, 0.1, 0.05).normalized();

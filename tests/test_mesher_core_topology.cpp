@@ -91,3 +91,74 @@ TEST(CoreTopology, CavityIsNotClosed) {
     EXPECT_EQ(g.hexes, 25u);
     EXPECT_EQ(g.chi, (std::vector<std::int64_t>{2}));
 }
+
+namespace {
+
+// Grows from `keep` through `fill` (both flags of block b), as the core stage does.
+Grown grow_filled(const HexBlock& b, const std::vector<char>& keep, const std::vector<char>& fill, std::size_t parts,
+                  std::size_t handles, std::vector<char>* result = nullptr) {
+    const auto cells = cells_of(b.mesh);
+    std::vector<double> score(cells.size(), 0.0);
+    const std::vector<char> in =
+        mesher::grow_core_with_topology(cells, b.mesh.points.size(), keep, fill, score, parts, handles);
+    Grown g;
+    for (std::size_t h = 0; h < in.size(); ++h) {
+        EXPECT_TRUE(!in[h] || keep[h] || fill[h]) << "hex " << h << " grown outside candidates and fill";
+        g.hexes += in[h] ? 1 : 0;
+    }
+    const auto topo = geometry::check_hex_topology(selected_mesh(b.mesh, in), 0);
+    EXPECT_EQ(topo.non_manifold_edges + topo.non_manifold_vertices, 0u);
+    for (const auto& c : topo.boundary_components) g.chi.push_back(c.euler());
+    if (result) *result = in;
+    return g;
+}
+
+}  // namespace
+
+TEST(CoreTopology, TunnelIsFilledNotCut) {
+    // The ring of 8 with its hole a fill hex: without fill one ring hex is cut (7); with the
+    // hole as fill the tunnel is closed instead, and the whole ring stays (9, a ball).
+    const HexBlock b = hex_block(3, 3, 1);
+    const auto ring = flags(b, [](int i, int j, int) { return !(i == 1 && j == 1); });
+    const auto hole = flags(b, [](int i, int j, int) { return i == 1 && j == 1; });
+    EXPECT_EQ(grow_filled(b, ring, {}, 1, 0).hexes, 7u);
+    std::vector<char> in;
+    const Grown filled = grow_filled(b, ring, hole, 1, 0, &in);
+    EXPECT_EQ(filled.hexes, 9u);
+    EXPECT_EQ(filled.chi, (std::vector<std::int64_t>{2}));
+    EXPECT_TRUE(in[static_cast<std::size_t>(b.cell(1, 1, 0))]);
+}
+
+TEST(CoreTopology, ThinNeckJoinsAPartThroughFill) {
+    // Two 2x1x1 parts of a 5x1x1 row, the middle cell fill: one part asked for, the neck
+    // is kept and the far part joins (5); without fill only the seeded part grows (2).
+    const HexBlock b = hex_block(5, 1, 1);
+    const auto parts = flags(b, [](int i, int, int) { return i != 2; });
+    const auto neck = flags(b, [](int i, int, int) { return i == 2; });
+    EXPECT_EQ(grow_filled(b, parts, {}, 1, 0).hexes, 2u);
+    const Grown joined = grow_filled(b, parts, neck, 1, 0);
+    EXPECT_EQ(joined.hexes, 5u);
+    EXPECT_EQ(joined.chi, (std::vector<std::int64_t>{2}));
+}
+
+TEST(CoreTopology, UnneededFillIsPeeled) {
+    // A 3x3x3 candidate block inside a 5x5x5 block whose shell is fill: the growth runs
+    // through the shell, and every shell hex is peeled again (the topology needs none).
+    const HexBlock b = hex_block(5, 5, 5);
+    const auto inner = flags(b, [](int i, int j, int k) { return i > 0 && i < 4 && j > 0 && j < 4 && k > 0 && k < 4; });
+    const auto shell = flags(b, [](int i, int j, int k) { return !(i > 0 && i < 4 && j > 0 && j < 4 && k > 0 && k < 4); });
+    const Grown g = grow_filled(b, inner, shell, 1, 0);
+    EXPECT_EQ(g.hexes, 27u);
+    EXPECT_EQ(g.chi, (std::vector<std::int64_t>{2}));
+}
+
+TEST(CoreTopology, PeelingKeepsAGenuineHandle) {
+    // A ring of candidates that the input may keep as a handle (1 allowed), fill around it
+    // on top: peeling the fill must not open or close anything (chi 0 stays).
+    const HexBlock b = hex_block(3, 3, 2);
+    const auto ring = flags(b, [](int i, int j, int k) { return k == 0 && !(i == 1 && j == 1); });
+    const auto lid = flags(b, [](int i, int j, int k) { return k == 1 && !(i == 1 && j == 1); });
+    const Grown g = grow_filled(b, ring, lid, 1, 1);
+    EXPECT_EQ(g.hexes, 8u);
+    EXPECT_EQ(g.chi, (std::vector<std::int64_t>{0}));
+}

@@ -1,6 +1,7 @@
 #include "dualhex/geometry/aabb_tree.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <numeric>
 
@@ -75,13 +76,26 @@ int AabbTree::build(int first, int count) {
 }
 
 ClosestPoint AabbTree::closest_point(const Vector3d& p) const {
+    return closest_point(p, std::numeric_limits<double>::infinity());
+}
+
+ClosestPoint AabbTree::closest_point(const Vector3d& p, double max_squared_distance) const {
     ClosestPoint best;
-    best.squared_distance = std::numeric_limits<double>::infinity();
-    std::vector<int> stack{0};
-    while (!stack.empty()) {
-        const Node& node = nodes_[stack.back()];
-        stack.pop_back();
-        if (node.box.squaredExteriorDistance(p) >= best.squared_distance) continue;
+    best.squared_distance = max_squared_distance;
+    best.triangle = -1;
+    // A fixed stack (no allocation per query): the median split keeps the depth below
+    // log2(triangles) + 2, and each level pushes at most 2 nodes.
+    struct Entry {
+        int node;
+        double squared_distance;  // of the node's box, computed when pushed
+    };
+    std::array<Entry, 160> stack;
+    int top = 0;
+    stack[top++] = {0, nodes_.front().box.squaredExteriorDistance(p)};
+    while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.squared_distance >= best.squared_distance) continue;
+        const Node& node = nodes_[e.node];
         if (node.left < 0) {
             for (int n = node.first; n < node.first + node.count; ++n) {
                 const auto& tri = surface_.triangles[order_[n]];
@@ -96,11 +110,11 @@ ClosestPoint AabbTree::closest_point(const Vector3d& p) const {
         const double dr = nodes_[node.right].box.squaredExteriorDistance(p);
         // push the farther child first so the nearer one is visited first
         if (dl < dr) {
-            stack.push_back(node.right);
-            stack.push_back(node.left);
+            stack[top++] = {node.right, dr};
+            stack[top++] = {node.left, dl};
         } else {
-            stack.push_back(node.left);
-            stack.push_back(node.right);
+            stack[top++] = {node.left, dl};
+            stack[top++] = {node.right, dr};
         }
     }
     return best;

@@ -63,18 +63,27 @@ std::vector<std::array<int, 4>> boundary_quads(const HexMesh& mesh) {
     // VTK hex faces, outward (right-hand normal points out of the hex).
     static constexpr int kFace[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
                                         {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-    std::map<std::array<int, 4>, std::pair<int, std::array<int, 4>>> faces;
+    // Sorted (key, quad) pairs instead of a map: the same quads in the same (key) order.
+    struct Use {
+        std::array<int, 4> key, quad;
+    };
+    std::vector<Use> uses;
+    uses.reserve(mesh.hexes.size() * 6);
     for (const auto& h : mesh.hexes)
         for (const auto& f : kFace) {
-            std::array<int, 4> quad{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
-            std::array<int, 4> key = quad;
-            std::sort(key.begin(), key.end());
-            auto& slot = faces[key];
-            if (slot.first++ == 0) slot.second = quad;
+            Use u{{}, {h[f[0]], h[f[1]], h[f[2]], h[f[3]]}};
+            u.key = u.quad;
+            std::sort(u.key.begin(), u.key.end());
+            uses.push_back(u);
         }
+    std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) { return a.key < b.key; });
     std::vector<std::array<int, 4>> out;
-    for (const auto& [key, slot] : faces)
-        if (slot.first == 1) out.push_back(slot.second);
+    for (std::size_t i = 0; i < uses.size();) {
+        std::size_t j = i + 1;
+        while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+        if (j - i == 1) out.push_back(uses[i].quad);
+        i = j;
+    }
     return out;
 }
 

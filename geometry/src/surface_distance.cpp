@@ -12,10 +12,17 @@ namespace {
 
 using Eigen::Vector3d;
 
-// Samples every triangle of `from` on its barycentric grid; distances to `to`.
+// Samples every triangle of `from` on its barycentric grid; distances to `to`. A vertex
+// is a sample of every triangle around it: its distance is computed once.
 DirectedDistance directed_distance(const TriangleSurface& from, const AabbTree& to, double spacing,
                                    int max_subdivisions) {
     DirectedDistance d;
+    std::vector<double> vertex_distance(from.vertices.size(), -1.0);
+    const auto distance_at = [&](int v) {
+        double& dv = vertex_distance[static_cast<std::size_t>(v)];
+        if (dv < 0) dv = std::sqrt(to.squared_distance(from.vertices[static_cast<std::size_t>(v)]));
+        return dv;
+    };
     double weighted = 0, area_sum = 0;
     for (const auto& t : from.triangles) {
         const Vector3d& a = from.vertices[static_cast<std::size_t>(t[0])];
@@ -29,12 +36,13 @@ DirectedDistance directed_distance(const TriangleSurface& from, const AabbTree& 
         for (int i = 0; i <= n; ++i)
             for (int j = 0; i + j <= n; ++j) {
                 const Vector3d p = a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
-                const double dist = std::sqrt(to.squared_distance(p));
+                const int corner = i == 0 && j == 0 ? t[0] : i == n ? t[1] : j == n ? t[2] : -1;
+                const double dist = corner >= 0 ? distance_at(corner) : std::sqrt(to.squared_distance(p));
                 sum += dist;
                 ++d.samples;
                 if (dist > d.max) {
                     d.max = dist;
-                    d.farthest = p;
+                    d.farthest = corner >= 0 ? from.vertices[static_cast<std::size_t>(corner)] : p;
                 }
             }
         weighted += area * sum / count;

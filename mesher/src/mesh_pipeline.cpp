@@ -24,6 +24,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The Hausdorff target of issue 12 (relative to the bbox diagonal): farther surface points
+// are listed with their cause (far_surface_points).
+constexpr double kFarSurfaceDistance = 0.006;
+
 // The stages in run order: progress reports stage i as i of their number done (a stage
 // missing here reports all done: add new stages to the list).
 constexpr std::array<std::string_view, 13> kStages{"octree", "balance", "pair",     "install",  "verify", "dual",  "core",
@@ -219,6 +223,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         result.singular_edge_valences = interior_singular_edge_valences(mesh);
         result.hausdorff = geometry::boundary_to_surface_distance(mesh, tree);
         result.distance = geometry::surface_distance(mesh, tree);
+        result.far_points = far_surface_points(mesh, tree, result.core, kFarSurfaceDistance * result.distance.diagonal);
         if (options.feature_angle > 0) {
             result.creases = measure_creases(mesh, tree.surface(), features, options.feature_angle);
             snapped.hexes = mesh.hexes;

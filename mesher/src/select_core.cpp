@@ -36,22 +36,33 @@ EmbeddedDual embed_dual(const ClippedDual& dual, std::int64_t extent, const geom
     const std::size_t n = dual.points.size();
     EmbeddedDual out;
     out.points.reserve(n);
-    out.signed_distance.reserve(n);
-    for (const RationalPoint& rp : dual.points) {
-        const Eigen::Vector3d p =
-            root.origin + root.size * Eigen::Vector3d(rp.coordinate(0, ext), rp.coordinate(1, ext), rp.coordinate(2, ext));
-        out.points.push_back(p);
-        out.signed_distance.push_back(std::sqrt(tree.squared_distance(p)));
-    }
-    // Signs: a ray-parity test at one point per region, then spread along dual edges: if
-    // |p - q| < d(p), the segment pq stays in the open ball around p that the surface does
-    // not meet, so q is on p's side.
+    out.signed_distance.assign(n, 0.0);
+    for (const RationalPoint& rp : dual.points)
+        out.points.push_back(root.origin +
+                             root.size * Eigen::Vector3d(rp.coordinate(0, ext), rp.coordinate(1, ext), rp.coordinate(2, ext)));
     std::vector<std::vector<std::uint32_t>> neighbours(n);
     for (const auto& h : dual.hexes)
         for (const auto& e : geometry::kHexEdgeCorners) {
             neighbours[h[static_cast<std::size_t>(e[0])]].push_back(h[static_cast<std::size_t>(e[1])]);
             neighbours[h[static_cast<std::size_t>(e[1])]].push_back(h[static_cast<std::size_t>(e[0])]);
         }
+    // Distances, searched only up to kReach x the longest dual edge at the point: a point
+    // farther from the surface is that far at least (a valid bound for the sign spreading
+    // below); only inside points that far get their exact distance (the core's depth order
+    // needs it; outside, every hex around is outside whatever the value).
+    constexpr double kReach = 4.0;
+    std::vector<char> capped(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        double longest = 0;
+        for (std::uint32_t q : neighbours[i]) longest = std::max(longest, (out.points[q] - out.points[i]).norm());
+        const double reach = longest > 0 ? kReach * longest : INFINITY;
+        const geometry::ClosestPoint c = tree.closest_point(out.points[i], reach * reach);
+        capped[i] = c.triangle < 0 ? 1 : 0;
+        out.signed_distance[i] = std::sqrt(c.squared_distance);
+    }
+    // Signs: a ray-parity test at one point per region, then spread along dual edges: if
+    // |p - q| < d(p), the segment pq stays in the open ball around p that the surface does
+    // not meet, so q is on p's side.
     std::vector<signed char> sign(n, 0);
     std::vector<std::uint32_t> stack;
     for (std::size_t start = 0; start < n; ++start) {
@@ -68,6 +79,8 @@ EmbeddedDual embed_dual(const ClippedDual& dual, std::int64_t extent, const geom
                 }
         }
     }
+    for (std::size_t i = 0; i < n; ++i)
+        if (capped[i] && sign[i] > 0) out.signed_distance[i] = std::sqrt(tree.squared_distance(out.points[i]));
     for (std::size_t i = 0; i < n; ++i) out.signed_distance[i] *= sign[i];
     return out;
 }
@@ -150,13 +163,95 @@ void keep_largest_parts(const std::vector<std::array<int, 8>>& cells, const std:
     }
 }
 
-bool has_topology(const geometry::HexMesh& mesh, const std::vector<geometry::SurfaceComponent>& input) {
-    const geometry::HexTopology t = geometry::check_hex_topology(mesh, 0);
+bool has_topology(const geometry::HexTopology& t, const std::vector<geometry::SurfaceComponent>& input) {
     return t.non_manifold_edges == 0 && t.non_manifold_vertices == 0 &&
            geometry::compare_topology(t.boundary_components, input).same;
 }
 
+bool has_topology(const geometry::HexMesh& mesh, const std::vector<geometry::SurfaceComponent>& input) {
+    return has_topology(geometry::check_hex_topology(mesh, 0), input);
+}
+
 }  // namespace
+
+namespace {
+
+std::size_t count_in(const std::vector<std::uint32_t>& hexes, const std::vector<char>& flags) {
+    std::size_t n = 0;
+    for (std::uint32_t h : hexes) n += flags[h] ? 1 : 0;
+    return n;
+}
+
+// The rule's selection had another topology than the input, or parts beyond the input's
+// number: regrown by topology-controlled steps, once cutting (candidates only) and once
+// through fill hexes (closing tunnels, joining parts; first, and alone if it keeps every
+// rule hex); of the results with the input's
+// topology (the rule's own included), the one keeping the most of the rule's hexes, then
+// the fewest fill hexes, is taken.
+void choose_regrowth(const std::vector<std::array<int, 8>>& cells, const std::vector<char>& rule,
+                     const std::vector<double>& score, const std::vector<double>& fill_score,
+                     const EmbeddedDual& embedded, const std::vector<geometry::SurfaceComponent>& input,
+                     bool rule_valid, CoreSelection& out) {
+    const std::size_t keep = std::max<std::size_t>(1, input.size());
+    std::size_t handles = 0;
+    for (const auto& c : input) handles += static_cast<std::size_t>(std::max<std::int64_t>(0, (2 - c.euler()) / 2));
+    std::vector<char> fill(cells.size(), 0);
+    for (std::size_t h = 0; h < cells.size(); ++h) fill[h] = !rule[h] && fill_score[h] > 0;
+    const std::size_t rule_kept = out.mesh.hexes.size();
+    CoreSelection best = out;
+    std::size_t best_rule = rule_valid ? rule_kept : 0, best_fill = 0;
+    bool found = rule_valid;
+    const auto rule_total = static_cast<std::size_t>(std::count(rule.begin(), rule.end(), 1));
+    for (const bool with_fill : {true, false}) {  // cutting cannot beat a fill that kept every rule hex
+        if (found && best_rule == rule_total) break;
+        const std::vector<char> grown = grow_core_with_topology(cells, embedded.points.size(), rule,
+                                                                with_fill ? fill : std::vector<char>{}, score, keep, handles);
+        CoreSelection c = out;
+        keep_largest_parts(cells, grown, embedded, keep, c);
+        if (c.mesh.hexes.empty() || !has_topology(c.mesh, input)) continue;
+        const std::size_t from_rule = count_in(c.dual_hex, rule);
+        const std::size_t from_fill = c.mesh.hexes.size() - from_rule;
+        if (found && (from_rule < best_rule || (from_rule == best_rule && from_fill >= best_fill))) continue;
+        c.topology_controlled = true;
+        c.topology_fill = from_fill;
+        c.topology_dropped = rule_kept > from_rule ? rule_kept - from_rule : 0;
+        c.topology_rejoined = from_rule > rule_kept ? from_rule - rule_kept : 0;
+        best = std::move(c);
+        best_rule = from_rule;
+        best_fill = from_fill;
+        found = true;
+    }
+    if (found) out = std::move(best);
+}
+
+// Per dual hex what the stage did: Thin/Outside as the rule found it, then the repair,
+// the part filter (rule_core: the kept parts of the repaired selection) and the regrowth.
+void set_fates(const std::vector<char>& rule, const std::vector<char>& selected, const std::vector<char>& rule_core,
+               CoreSelection& out) {
+    std::vector<char> in_core(rule.size(), 0);
+    for (std::uint32_t h : out.dual_hex) in_core[h] = 1;
+    for (std::size_t h = 0; h < rule.size(); ++h) {
+        if (in_core[h]) out.fate[h] = rule[h] ? CoreFate::Core : CoreFate::FillCore;
+        else if (rule_core[h]) out.fate[h] = CoreFate::Cut;
+        else if (rule[h]) out.fate[h] = CoreFate::DroppedPart;
+        else if (selected[h]) out.fate[h] = CoreFate::RepairOut;
+    }
+}
+
+}  // namespace
+
+const char* core_fate_name(CoreFate fate) {
+    switch (fate) {
+    case CoreFate::Outside: return "outside";
+    case CoreFate::Thin: return "thin";
+    case CoreFate::RepairOut: return "repair_removed";
+    case CoreFate::DroppedPart: return "dropped_part";
+    case CoreFate::Cut: return "cut";
+    case CoreFate::Core: return "core";
+    case CoreFate::FillCore: return "fill";
+    }
+    return "?";
+}
 
 CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded, std::size_t input_components,
                           const CoreOptions& options) {
@@ -169,19 +264,24 @@ CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded,
     CoreSelection out;
     const std::size_t m = dual.hexes.size();
     std::vector<std::array<int, 8>> cells(m);
-    std::vector<double> score(m);
+    std::vector<double> score(m), fill_score(m);
     std::vector<char> selected(m, 0);
+    out.fate.assign(m, CoreFate::Outside);
+    out.dual_centroid.assign(m, Eigen::Vector3d::Zero());
     for (std::size_t h = 0; h < m; ++h) {
         const auto& hex = dual.hexes[h];
-        const double margin = options.margin * mean_edge(hex, embedded.points);
-        double s = INFINITY;
+        const double edge = mean_edge(hex, embedded.points);
+        double depth = INFINITY;  // the least signed distance of a corner
         for (int c = 0; c < 8; ++c) {
             cells[h][static_cast<std::size_t>(c)] = static_cast<int>(hex[static_cast<std::size_t>(c)]);
-            s = std::min(s, embedded.signed_distance[hex[static_cast<std::size_t>(c)]] - margin);
+            depth = std::min(depth, embedded.signed_distance[hex[static_cast<std::size_t>(c)]]);
+            out.dual_centroid[h] += embedded.points[hex[static_cast<std::size_t>(c)]] / 8.0;
         }
-        score[h] = s;
-        selected[h] = s > 0 ? 1 : 0;
+        score[h] = depth - options.margin * edge;
+        fill_score[h] = options.fill_margin < 0 ? -INFINITY : depth - options.fill_margin * edge;
+        selected[h] = score[h] > 0 ? 1 : 0;
         out.selected_by_rule += static_cast<std::size_t>(selected[h]);
+        out.fate[h] = depth > 0 ? CoreFate::Thin : CoreFate::Outside;
     }
     const geometry::ManifoldRepairResult repair =
         geometry::repair_manifold_selection(cells, dual.points.size(), selected, score);
@@ -190,19 +290,18 @@ CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded,
     out.repair_remaining_defects = repair.remaining.non_manifold_edges.size() + repair.remaining.non_manifold_vertices.size();
     const std::size_t keep = std::max<std::size_t>(1, input.size());
     keep_largest_parts(cells, repair.selected, embedded, keep, out);
-    if (!control_topology || out.mesh.hexes.empty() || has_topology(out.mesh, input)) return out;
-
-    // The rule's selection has the wrong topology (tunnels or lost handles at thin parts):
-    // grow it again keeping topology under control, and take that only if it is right.
-    std::size_t handles = 0;
-    for (const auto& c : input) handles += static_cast<std::size_t>(std::max<std::int64_t>(0, (2 - c.euler()) / 2));
-    const std::vector<char> grown = grow_core_with_topology(cells, dual.points.size(), repair.selected, score, keep, handles);
-    CoreSelection controlled = out;
-    keep_largest_parts(cells, grown, embedded, keep, controlled);
-    if (controlled.mesh.hexes.empty() || !has_topology(controlled.mesh, input)) return out;
-    controlled.topology_controlled = true;
-    controlled.topology_dropped = out.mesh.hexes.size() - controlled.mesh.hexes.size();
-    return controlled;
+    const std::vector<char>& rule = repair.selected;
+    std::vector<char> rule_core(m, 0);
+    for (std::uint32_t h : out.dual_hex) rule_core[h] = 1;
+    if (control_topology && !out.mesh.hexes.empty()) {
+        const geometry::HexTopology t = geometry::check_hex_topology(out.mesh, 0);
+        for (const auto& c : t.boundary_components) out.rule_euler.push_back(c.euler());
+        const bool rule_valid = has_topology(t, input);
+        if (!(rule_valid && out.dropped_components.empty()))
+            choose_regrowth(cells, rule, score, fill_score, embedded, input, rule_valid, out);
+    }
+    set_fates(rule, selected, rule_core, out);
+    return out;
 }
 
 }  // namespace dualhex::mesher

@@ -38,6 +38,9 @@ public:
 
     /// The surface point nearest to p (ties: any). Precondition: non-empty surface.
     [[nodiscard]] ClosestPoint closest_point(const Eigen::Vector3d& p) const;
+    /// The same, searching only closer than sqrt(max_squared_distance): if no triangle is,
+    /// squared_distance == max_squared_distance and triangle == -1 (point undefined).
+    [[nodiscard]] ClosestPoint closest_point(const Eigen::Vector3d& p, double max_squared_distance) const;
     [[nodiscard]] double squared_distance(const Eigen::Vector3d& p) const { return closest_point(p).squared_distance; }
 
     /// True iff some (closed) triangle overlaps the (closed) box.

@@ -2,6 +2,7 @@
 // The select-core stage's options and result (select_core.hpp), without the clipped dual's
 // headers, so that the pipeline's header can carry them.
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <vector>
@@ -12,7 +13,23 @@ namespace dualhex::mesher {
 
 struct CoreOptions {
     double margin = 0.1;  ///< corners at >= margin * (mean edge of the hex) inside the surface
+    /// Fill hexes (grown through to close tunnels and join thin parts, core_topology.hpp):
+    /// all corners at >= fill_margin * (mean edge) inside the surface; < 0: no fill.
+    double fill_margin = 0.02;
 };
+
+/// What the core stage decided about one dual hex (for the distance diagnostic).
+enum class CoreFate : std::uint8_t {
+    Outside,      ///< a corner outside the surface
+    Thin,         ///< inside, but a corner closer than margin * h: the rule left it out
+    RepairOut,    ///< the rule took it, the manifold repair removed it
+    DroppedPart,  ///< in a face-connected part beyond the input's number of components
+    Cut,          ///< the topology-controlled regrowth left it out
+    Core,         ///< in the core
+    FillCore,     ///< in the core as fill (closes a tunnel or joins a part)
+};
+inline constexpr std::size_t kCoreFates = 7;
+[[nodiscard]] const char* core_fate_name(CoreFate fate);
 
 struct CoreSelection {
     geometry::HexMesh mesh;                ///< the core (may be empty)
@@ -23,8 +40,16 @@ struct CoreSelection {
     std::size_t repair_remaining_defects = 0;  ///< non-manifold edges + vertices left
     std::vector<std::size_t> kept_components;     ///< hexes per kept component, decreasing
     std::vector<std::size_t> dropped_components;  ///< hexes per dropped component, decreasing
+    /// Euler characteristic per boundary component of the rule's kept parts (before any
+    /// regrowth): 2 - chi = twice the handles the regrowth must open or close.
+    std::vector<std::int64_t> rule_euler;
     bool topology_controlled = false;  ///< the rule's selection had the wrong topology; regrown (core_topology.hpp)
     std::size_t topology_dropped = 0;  ///< hexes of the rule's selection the regrowth left out
+    std::size_t topology_fill = 0;     ///< fill hexes the regrowth kept (closing tunnels, joining parts)
+    std::size_t topology_rejoined = 0; ///< rule hexes of dropped parts the regrowth joined again
+    /// Per dual hex: its fate and its centroid (the distance diagnostic reads them).
+    std::vector<CoreFate> fate;
+    std::vector<Eigen::Vector3d> dual_centroid;
     /// Interior edges of the core (not on its boundary) with != 4 hexes: valence -> count.
     /// The pad leaves them as they are (the schemes' valences).
     std::map<int, std::size_t> singular_edge_valences;

@@ -139,6 +139,9 @@ struct MeshPipelineResult {
     std::map<int, std::size_t> singular_edge_valences;
     HausdorffResult hausdorff;            ///< one-sided, sampled (the older figure)
     geometry::SurfaceDistance distance;   ///< two-sided (surface_distance.hpp)
+    /// Where the input is farther than 0.6% of the bbox diagonal from the hex boundary, and
+    /// which core decision left the hexes there out (mesh_report.hpp).
+    std::vector<FarSurfacePoint> far_points;
     MeshTimes ms;
 };
 

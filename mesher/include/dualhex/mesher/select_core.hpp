@@ -41,6 +41,9 @@
 namespace dualhex::mesher {
 
 /// Signed distance (> 0 inside) of every embedded dual point; the points (N, 3) as embedded.
+/// Exact inside and wherever the surface is within 4 x the point's longest dual edge;
+/// farther outside, minus that bound (the search stops there: such points only ever belong
+/// to hexes far outside, and the bound is all the sign spreading needs).
 /// The sign is is_inside's at one point per region and spread exactly along dual edges
 /// shorter than the distance (no surface between), so few points cast rays.
 struct EmbeddedDual {
