@@ -148,7 +148,7 @@ void register_verify(CLI::App& app) {
     sub->add_flag("--list", opt->list, "List the checks instead of running them");
     sub->add_option("--only", opt->only, "Run only checks whose name contains this text (repeatable)");
     sub->add_option("--certify", opt->certify,
-                    "After a passing run, write certificates (as `dualhex certify`) into DIR, DIR/weak, DIR/variants");
+                    "After a passing run, write certificates (as `dualhex certify`) into DIR and DIR/{weak,variants,windows,boundary,weak_spread}");
     sub->add_flag("--force", opt->force, "With --certify: write into DIR even if it is not empty");
     add_threads_option(*sub, opt->threads);
     add_no_progress_flag(*sub, opt->no_progress);

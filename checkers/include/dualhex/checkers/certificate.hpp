@@ -170,7 +170,8 @@ CertificateSet certify_variants(const ElementLibrary& library, const std::filesy
 /// Everything `dualhex certify` writes: certify_strong (StrongRule) into `dir`,
 /// certify_weak (WeakRule) into dir/weak, certify_variants into dir/variants, certify_windows
 /// (StrongRule, window_certificates.hpp) into dir/windows, certify_boundary_windows
-/// (StrongRule, boundary_certificates.hpp) into dir/boundary.
+/// (StrongRule, boundary_certificates.hpp) into dir/boundary, certify_spread_grids
+/// (WeakRule, compositional_weak.hpp) into dir/weak_spread.
 struct CertifyResult {
     std::vector<CertificateSet> sets;
     [[nodiscard]] std::size_t certificates() const;
