@@ -181,8 +181,10 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
 
 namespace {
 
-// Phase 1 from the current state, kept only under the contract (never more inverted, never
-// a lower minimum than at its start: else the points are restored); returns its sweeps.
+// Phase 1 from the current state, kept if it leaves fewer inverted hexes, or as many and no
+// lower a minimum (else the points are restored); returns its sweeps. Fewer inverted hexes
+// may come with a lower minimum of the remaining ones: the whole optimiser's contract is
+// kept by optimise_mesh's final check.
 int untangle_kept(detail::OptimiseContext& c, detail::BarrierEnergy& energy, int max_sweeps, QualityState& state,
                   bool& kept) {
     const std::vector<Eigen::Vector3d> before = c.mesh.points;
@@ -191,7 +193,8 @@ int untangle_kept(detail::OptimiseContext& c, detail::BarrierEnergy& energy, int
     const double min_before = geometry::summarize(sj_before).min;
     const int sweeps = detail::untangle_phase(c, energy, max_sweeps);
     const std::size_t inverted = count_inverted(state.scaled_jacobian);
-    kept = inverted <= inverted_before && geometry::summarize(state.scaled_jacobian).min >= min_before;
+    kept = inverted < inverted_before ||
+           (inverted == inverted_before && geometry::summarize(state.scaled_jacobian).min >= min_before);
     if (kept) {
         state.inverted = inverted;
     } else {
@@ -209,6 +212,8 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
     OptimiseResult r;
     r.inverted_before = state.inverted;
     r.min_before = geometry::summarize(state.scaled_jacobian).min;
+    const std::vector<Eigen::Vector3d> start = mesh.points;  // for the final contract check
+    const QualityState start_state = state;
     const VertexDomain domain{tree, curves, constraints};
     const detail::VertexHexes incidence(mesh);
     detail::BarrierEnergy energy(mesh);
@@ -262,6 +267,11 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
         r.work += lr.work;
         r.hit_time_limit = r.hit_time_limit || lr.hit_time_limit;
         state = quality_state(mesh);  // the region's contract keeps the whole mesh's
+    }
+    // The contract: never more inverted hexes, never a lower minimum than at the start.
+    if (state.inverted > r.inverted_before || geometry::summarize(state.scaled_jacobian).min < r.min_before) {
+        mesh.points = start;
+        state = start_state;
     }
     r.inverted_after = state.inverted;
     r.min_after = geometry::summarize(state.scaled_jacobian).min;
