@@ -9,14 +9,27 @@
 Errors: dualhex.InputError (a bad file or array; .file, .line, .message), its subclass
 dualhex.InstallError (a grid that is not paired / balanced as required), ValueError for
 a bad option value, TypeError for an unknown option, dualhex.VerificationError for a
-result that fails its own verification (a bug).
+result that fails its own verification (a bug), dualhex.MeshCheckError for a mesh that fails
+the mesh check (inverted or flat hexes, or a topology other than the input's): the
+`dualhex mesh` exit 1 (.mesh holds the mesh, .problems says what failed and where).
 """
 from ._dualhex import (InputError, InstallError, VerificationError, classify, elements_directory,
                        list_checks, mesh_defaults, mesh_option_names, verify)
 from . import _dualhex
 
 __all__ = ["Mesh", "install", "mesh", "verify", "list_checks", "classify", "mesh_option_names",
-           "mesh_defaults", "elements_directory", "InputError", "InstallError", "VerificationError"]
+           "mesh_defaults", "elements_directory", "InputError", "InstallError", "VerificationError",
+           "MeshCheckError"]
+
+
+class MeshCheckError(RuntimeError):
+    """dualhex.mesh()'s check failed (as `dualhex mesh` exits 1): .problems (list of str),
+    .mesh (the dualhex.Mesh, to look at)."""
+
+    def __init__(self, problems, mesh):
+        super().__init__("; ".join(problems))
+        self.problems = problems
+        self.mesh = mesh
 
 
 class Mesh:
@@ -54,13 +67,34 @@ def install(leaves, balance="weak", outside_root="coarse", check=True):
     return Mesh(_dualhex._install(leaves, balance, outside_root, check))
 
 
-def mesh(surface=None, **options):
+def mesh(surface=None, check=True, accept_topology_change=False, **options):
     """Meshes a closed triangle surface with hexahedra (the `dualhex mesh` pipeline).
 
     surface: a path (OBJ/OFF/STL/PLY), a pair (V, F) of an (N, 3) float array and an
     (M, 3) integer array, or None for the embedded torus. options: see
-    dualhex.mesh_option_names() / mesh_defaults() (balance, max_depth, ...). Warnings about
-    the surface (e.g. flipped orientation) are issued as UserWarning and kept in
-    report["warnings"]. level is None (the pipeline does not keep it).
+    dualhex.mesh_option_names() / mesh_defaults() (balance, max_depth, ...), and
+    preset="coarse" | "medium" | "fine" (the size options of `dualhex mesh --preset`, applied
+    before the others). Warnings about the surface (e.g. flipped orientation) are issued as
+    UserWarning and kept in report["warnings"]. level is None (the pipeline does not keep it).
+    check (default): raise MeshCheckError where `dualhex mesh` exits 1: an inverted or flat
+    hex (report["inverted_hexes"]), or boundary topology other than the input's unless
+    accept_topology_change (report["topology"]). check=False returns the mesh either way.
     """
-    return Mesh(_dualhex._mesh(surface, **options))
+    m = Mesh(_dualhex._mesh(surface, **options))
+    if check:
+        problems = _check_problems(m.report, accept_topology_change)
+        if problems:
+            raise MeshCheckError(problems, m)
+    return m
+
+
+def _check_problems(report, accept_topology_change):
+    problems = []
+    inverted = report["inverted_hexes"]
+    if inverted:
+        shown = ", ".join(str(h) for h in inverted[:5]) + (", ..." if len(inverted) > 5 else "")
+        problems.append(f"{len(inverted)} inverted or flat hex(es): {shown}")
+    topology = report["topology"]
+    if not topology["matches"] and not accept_topology_change:
+        problems.append("boundary topology differs from the input's: " + "; ".join(topology["problems"]))
+    return problems

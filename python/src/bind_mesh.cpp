@@ -123,6 +123,7 @@ py::dict report(const Meshed& m, const std::string& name, const mesher::MeshPipe
     topo["input_euler"] = r.topology.input_euler;
     topo["problems"] = r.topology.problems;
     d["topology"] = topo;
+    d["inverted_hexes"] = r.inverted_hexes;  // ids of hexes with SJ <= the flat threshold: the check fails
     py::dict dist;
     dist["mean"] = r.distance.relative(r.distance.mean());
     dist["max"] = r.distance.relative(r.distance.max());

@@ -70,12 +70,30 @@ const std::vector<OptionBinding>& options_table() {
         field("thickness_factor", &Options::thickness_factor),
         field("curvature_angle", &Options::curvature_angle),
         field("max_leaves", &Options::max_leaves),
+        field("surface_band", &Options::surface_band),
+        field("thickness_levels", &Options::thickness_levels),
+        field("curvature_levels", &Options::curvature_levels),
         field("feature_angle", &Options::feature_angle),
         nested_field("min_quality", &Options::optimise, &mesher::OptimiseOptions::min_quality),
         nested_field("optimise_work", &Options::optimise, &mesher::OptimiseOptions::work_per_vertex),
+        nested_field("optimise_ms", &Options::optimise, &mesher::OptimiseOptions::time_limit_ms),
         field("feature_min_chain", &Options::feature_min_chain),
+        nested_field("core_margin", &Options::core, &mesher::CoreOptions::margin),
+        nested_field("core_fill_margin", &Options::core, &mesher::CoreOptions::fill_margin),
+        nested_field("pad_ray_limit", &Options::pad, &mesher::PadOptions::ray_limit),
     };
     return table;
+}
+
+// `preset` (coarse, medium, fine: the size options of `dualhex mesh --preset`) first, whatever
+// the keyword order, so that the other options refine it as on the command line.
+void apply_preset(const py::dict& kwargs, Options& options) {
+    if (!kwargs.contains("preset")) return;
+    const py::object v = kwargs["preset"];
+    const std::string name = py::isinstance<py::str>(v) ? v.cast<std::string>() : std::string(py::repr(v));
+    const auto preset = mesher::parse_mesh_preset(name);
+    if (!preset) throw std::invalid_argument("preset must be 'coarse', 'medium' or 'fine', got " + name);
+    static_cast<mesher::MeshSizeOptions&>(options) = mesher::mesh_preset(*preset);
 }
 
 }  // namespace
@@ -87,14 +105,19 @@ std::vector<std::string> mesh_option_names() {
 }
 
 void apply_mesh_options(const py::dict& kwargs, Options& options) {
+    apply_preset(kwargs, options);
+    // An absolute size replaces the relative one, as `--size` does on the command line.
+    if (kwargs.contains("size") && !kwargs.contains("size_rel")) options.size_rel = 0;
     for (const auto& [key, value] : kwargs) {
         const std::string name = py::str(key);
+        if (name == "preset") continue;
         const OptionBinding* binding = nullptr;
         for (const auto& o : options_table())
             if (o.name == name) binding = &o;
         if (!binding) {
             std::string known;
             for (const auto& n : mesh_option_names()) known += (known.empty() ? "" : ", ") + n;
+            known += ", preset";
             throw py::type_error("mesh() got an unexpected keyword argument '" + name + "' (known: " + known + ")");
         }
         binding->set(options, value);

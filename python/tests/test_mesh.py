@@ -38,8 +38,8 @@ def test_the_same_mesh_as_the_command_line(shared_data, cli, tmp_path):
 
 def test_arrays_give_the_same_mesh_as_the_file(shared_data):
     surface = shared_data / "surfaces" / "cgal_cube.off"
-    from_file = dualhex.mesh(surface)
-    from_arrays = dualhex.mesh(read_off(surface))
+    from_file = dualhex.mesh(surface, preset="coarse")
+    from_arrays = dualhex.mesh(read_off(surface), preset="coarse")
     assert from_arrays.report["input"] == "<(V, F) arrays>"
     np.testing.assert_array_equal(from_file.hexes, from_arrays.hexes)
     np.testing.assert_allclose(from_file.points, from_arrays.points)
@@ -48,9 +48,9 @@ def test_arrays_give_the_same_mesh_as_the_file(shared_data):
 def test_an_inward_surface_is_flipped_with_a_warning(shared_data):
     v, f = read_off(shared_data / "surfaces" / "cgal_cube.off")
     with pytest.warns(UserWarning, match="oriented inward; flipped"):
-        m = dualhex.mesh((v, f[:, ::-1]))
+        m = dualhex.mesh((v, f[:, ::-1]), preset="coarse")
     assert any("flipped" in w for w in m.report["warnings"])
-    assert len(m.hexes) == len(dualhex.mesh((v, f)).hexes)
+    assert len(m.hexes) == len(dualhex.mesh((v, f), preset="coarse").hexes)
 
 
 def test_options_map_onto_the_pipeline():
@@ -95,6 +95,48 @@ def test_malformed_arrays(surface, error):
         dualhex.mesh(surface)
 
 
+def test_a_preset_is_applied_first_and_refined_by_the_other_options():
+    coarse = dualhex.mesh(max_depth=4, preset="coarse", size_rel=0.05).report["options"]
+    assert coarse["size_rel"] == 0.05 and coarse["thickness_factor"] == 1.0 and coarse["curvature_angle"] == 50
+    assert coarse["max_depth"] == 4
+    fine = dualhex.mesh(size_rel=0.2, preset="fine", max_depth=4).report["options"]  # keyword order irrelevant
+    assert fine["size_rel"] == 0.2 and fine["thickness_factor"] == dualhex.mesh_defaults()["thickness_factor"]
+    absolute = dualhex.mesh(size=0.5, max_depth=4).report["options"]
+    assert absolute["size"] == 0.5 and absolute["size_rel"] == 0  # as --size does
+    core = dualhex.mesh(max_depth=4, core_margin=0.2, pad_ray_limit=3.0).report["options"]
+    assert core["core_margin"] == 0.2 and core["pad_ray_limit"] == 3.0
+
+
+def two_cubes():
+    """Two cubes, the second far below the octree's resolution (as tests/test_mesh_cli.cpp)."""
+    corners = [[(hi if v & 1 else lo), (hi if v & 2 else lo), (hi if v & 4 else lo)]
+               for lo, hi in ((0.0, 1.0), (1.5, 1.501)) for v in range(8)]
+    tris = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+            [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
+    return np.array(corners, dtype=np.float64), np.array([[a + b, b2 + b, c + b] for b in (0, 8) for a, b2, c in tris])
+
+
+def test_a_topology_change_raises_unless_accepted():
+    with pytest.raises(dualhex.MeshCheckError) as e:
+        dualhex.mesh(two_cubes(), max_depth=4)
+    assert "topology differs" in str(e.value) and e.value.mesh.report["topology"]["input_euler"] == [2, 2]
+    assert len(e.value.mesh.hexes) > 0  # the mesh is there to look at
+    accepted = dualhex.mesh(two_cubes(), max_depth=4, accept_topology_change=True)
+    assert not accepted.report["topology"]["matches"]
+    assert len(dualhex.mesh(two_cubes(), max_depth=4, check=False).hexes) == len(accepted.hexes)
+
+
+def test_inverted_hexes_raise_naming_them():
+    starved = dict(max_depth=4, smooth_iterations=0, optimise_work=0.000001)  # the optimiser gets one visit
+    with pytest.raises(dualhex.MeshCheckError) as e:
+        dualhex.mesh(**starved)
+    inverted = e.value.mesh.report["inverted_hexes"]
+    assert inverted and f"{len(inverted)} inverted or flat hex(es): {inverted[0]}" in e.value.problems[0]
+    q = e.value.mesh.quality[inverted]
+    assert np.logical_or(q <= 1e-6, np.isnan(q)).all()  # the check's flat threshold, kFlatScaledJacobian
+    assert dualhex.mesh(max_depth=4).report["inverted_hexes"] == []
+
+
 @pytest.mark.parametrize("kwargs, error, text", [
     ({"sise": 0.1}, TypeError, "unexpected keyword argument 'sise'"),
     ({"balance": "medium"}, ValueError, "balance"),
@@ -102,6 +144,8 @@ def test_malformed_arrays(surface, error):
     ({"max_depth": "deep"}, TypeError, "max_depth"),
     ({"max_depth": True}, TypeError, "max_depth"),
     ({"smooth_iterations": -1}, ValueError, "smoothing"),
+    ({"preset": "huge"}, ValueError, "preset must be"),
+    ({"core_margin": -1.0}, ValueError, "core margin"),
 ])
 def test_bad_options(kwargs, error, text):
     with pytest.raises(error) as e:
