@@ -26,7 +26,8 @@ struct AuditOptionsCli {
 
 // The certificate of an audited mesh: polyhedral -> `installation` on its bounding box
 // (subdivision, valences, all-hex dual: what `dualhex install --certify` claims); hex ->
-// `histogram` (the checker's always-checked conformity and closed cells, plus the counts).
+// `histogram` on its bounding box too (the checker's always-checked conformity and closed cells,
+// plus the counts).
 // Returns the refusal, empty if written.
 std::string write_audit_certificate(const AuditOptionsCli& opt, const audit::MeshFile& mesh,
                                     const audit::AuditReport& report) {
@@ -36,13 +37,8 @@ std::string write_audit_certificate(const AuditOptionsCli& opt, const audit::Mes
     if (!cert) return refusal;
     CertificateSpec spec;
     spec.name = "audit";
-    if (report.mode == "polyhedral") {
-        spec.kind = CertificateKind::Installation;
-        spec.domain = CertificateDomain::box(cert->lo, cert->hi);
-    } else {
-        spec.kind = CertificateKind::Histogram;
-        spec.domain = CertificateDomain{};
-    }
+    spec.kind = report.mode == "polyhedral" ? CertificateKind::Installation : CertificateKind::Histogram;
+    spec.domain = CertificateDomain::box(cert->lo, cert->hi);
     spec.comments = {"dualhex audit " + opt.input + " (" + report.mode + " mode), coordinates scaled by 2^" +
                      std::to_string(cert->scale_exponent)};
     std::ofstream out = open_output(opt.certify, opt.force);

@@ -17,8 +17,6 @@ struct Cert {
     std::vector<LatticePoint> pos;
     std::vector<std::vector<int>> faces;
     std::vector<std::vector<int>> cells;  // 2*f + side
-    bool interior_all = false;
-    std::vector<int> interior;
     std::vector<std::string> claims;  // the text after "claim "
     std::string domain;               // "box" / "torus"
     std::int64_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, period = 0;
@@ -28,17 +26,10 @@ inline Cert parse(const std::string& text) {
     Cert c;
     std::istringstream in(text);
     std::string line;
-    auto rows = [&](std::size_t n, auto&& f) {
-        for (std::size_t i = 0; i < n; ++i) {
-            std::getline(in, line);
-            f(line);
-        }
-    };
     while (std::getline(in, line)) {
         if (line.empty() || line[0] == '#') continue;
         std::istringstream ls(line);
         std::string key;
-        std::size_t n = 0;
         ls >> key;
         if (key == "name" || key == "kind") c.head.push_back(line);
         if (key == "domain") {
@@ -47,29 +38,20 @@ inline Cert parse(const std::string& text) {
             if (c.domain == "box") ls >> c.lo[0] >> c.lo[1] >> c.lo[2] >> c.hi[0] >> c.hi[1] >> c.hi[2];
             else ls >> c.period;
         }
-        if (key == "vertices") ls >> n, rows(n, [&](const std::string& l) {
-            std::istringstream s(l);
+        if (key == "v") {
             LatticePoint p;
-            s >> p.x >> p.y >> p.z;
+            ls >> p.x >> p.y >> p.z;
             c.pos.push_back(p);
-        });
-        if (key == "faces") ls >> n, rows(n, [&](const std::string& l) {
-            std::istringstream s(l);
+        }
+        if (key == "f") {
             std::vector<int> f;
-            for (int v; s >> v;) f.push_back(v);
+            for (int v; ls >> v;) f.push_back(v);
             c.faces.push_back(f);
-        });
-        if (key == "cells") ls >> n, rows(n, [&](const std::string& l) {
-            std::istringstream s(l);
+        }
+        if (key == "c") {
             std::vector<int> k;
-            for (std::string t; s >> t;) k.push_back(2 * std::stoi(t.substr(1)) + (t[0] == '-'));
+            for (std::string t; ls >> t;) k.push_back(2 * std::stoi(t.substr(1)) + (t[0] == '-'));
             c.cells.push_back(k);
-        });
-        if (key == "interior") {
-            std::string w;
-            ls >> w;
-            if (w == "all") c.interior_all = true;
-            else for (std::size_t i = 0, m = std::stoul(w); i < m; ++i) { int v; in >> v; c.interior.push_back(v); }
         }
         if (key == "claim") c.claims.push_back(line.substr(6));
     }
@@ -78,24 +60,18 @@ inline Cert parse(const std::string& text) {
 
 inline std::string serialize(const Cert& c, const std::string& name) {
     std::ostringstream o;
-    o << "dualhex-certificate 1\n";
+    o << "dualhex-certificate 2\n";
     for (const std::string& h : c.head) o << (h.rfind("name ", 0) == 0 ? "name " + name : h) << '\n';
-    o << "vertices " << c.pos.size() << '\n';
-    for (const auto& p : c.pos) o << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    o << "faces " << c.faces.size() << '\n';
+    for (const auto& p : c.pos) o << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
     for (const auto& f : c.faces) {
-        for (std::size_t i = 0; i < f.size(); ++i) o << (i ? " " : "") << f[i];
+        o << 'f';
+        for (int v : f) o << ' ' << v;
         o << '\n';
     }
-    o << "cells " << c.cells.size() << '\n';
     for (const auto& k : c.cells) {
-        for (std::size_t i = 0; i < k.size(); ++i) o << (i ? " " : "") << (k[i] % 2 ? '-' : '+') << k[i] / 2;
+        o << 'c';
+        for (int h : k) o << ' ' << (h % 2 ? '-' : '+') << h / 2;
         o << '\n';
-    }
-    if (c.interior_all) o << "interior all\n";
-    else {
-        o << "interior " << c.interior.size() << '\n';
-        for (int v : c.interior) o << v << '\n';
     }
     for (const auto& cl : c.claims) o << "claim " << cl << '\n';
     o << "end\n";

@@ -84,11 +84,6 @@ bool truth(const Cert& c) {
     std::vector<int> interior;
     for (std::size_t v = 0; v < V; ++v)
         if (!inc.is_boundary(VertexHandle(v))) interior.push_back(static_cast<int>(v));
-    if (c.interior_all ? interior.size() != V : interior != c.interior) {
-        std::vector<int> sorted = c.interior;
-        std::sort(sorted.begin(), sorted.end());
-        if (c.interior_all || sorted != interior) return false;
-    }
     if (c.domain == "box") {
         if (!check_element(k, ElementBox{{c.lo[0], c.lo[1], c.lo[2]}, c.hi[0] - c.lo[0]}).ok()) return false;
     } else {  // torus: closed, positions reduced, cells of positive volume filling the torus
@@ -179,29 +174,6 @@ std::vector<std::pair<std::string, Cert>> mutations(const Cert& c, std::size_t s
             m.faces[f][i] = (m.faces[f][i] + 1) % static_cast<int>(c.pos.size());
             add("change vertex id", m);
         }
-    }
-    if (c.interior_all) {
-        const std::size_t step = std::max<std::size_t>(7, c.pos.size() / 16);  // at most ~16 of them
-        for (std::size_t v = 0; v < c.pos.size(); v += step) {
-            Cert m = c;  // drop one vertex from the identification "all interior"
-            m.interior_all = false;
-            for (std::size_t w = 0; w < c.pos.size(); ++w)
-                if (w != v) m.interior.push_back(static_cast<int>(w));
-            add("remove interior vertex", m);
-        }
-    } else {
-        for (std::size_t i = 0; i < c.interior.size(); ++i) {
-            Cert m = c;
-            m.interior.erase(m.interior.begin() + static_cast<long>(i));
-            add("remove interior vertex", m);
-        }
-        for (std::size_t v = 0; v < c.pos.size(); ++v)
-            if (std::find(c.interior.begin(), c.interior.end(), static_cast<int>(v)) == c.interior.end()) {
-                Cert m = c;  // a boundary vertex claimed interior
-                m.interior.push_back(static_cast<int>(v));
-                add("add interior vertex", m);
-                break;
-            }
     }
     for (std::size_t i = 0; i < c.claims.size(); ++i) {  // wrong numbers in a claim
         std::istringstream s(c.claims[i]);

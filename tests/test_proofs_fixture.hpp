@@ -50,7 +50,7 @@ inline CheckerRun run_checker(const std::string& args) {
 inline std::vector<std::string> split_certificates(const std::string& text) {
     std::vector<std::string> out;
     std::size_t at = 0;
-    while ((at = text.find("dualhex-certificate 1\n", at)) != std::string::npos) {
+    while ((at = text.find("dualhex-certificate 2\n", at)) != std::string::npos) {
         const std::size_t end = text.find("\nend\n", at);
         out.push_back(text.substr(at, end + 5 - at));
         at = end;

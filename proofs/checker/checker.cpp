@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <locale>
 #include <map>
 #include <numeric>
 #include <set>
@@ -90,99 +92,62 @@ Ids to_ids(const vector<string>& toks, int line, size_t bound, bool sign) {
     }
     return out;
 }
-size_t to_count(const Line& l, size_t most) {  // "KEY N", N at most what can follow
-    if (l.tok.size() != 2) fail("line ", l.number, ": expected '", l.tok[0], " COUNT'");
-    const i64 n = to_int(l.tok[1], l.number);
-    if (n < 0 || static_cast<std::uint64_t>(n) > most) fail("line ", l.number, ": bad count ", n);
-    return static_cast<size_t>(n);
-}
 struct Cert {
-    string name, kind, domain;  // domain: box | torus | none
-    i64 lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, period = 0;
+    string name, kind, domain;  // domain: box | torus
+    i64 lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // torus: lo 0, hi the period
     vector<P3> pos;
     vector<Ids> faces, cells;  // faces: vertex loops; cells: 2 * face + side (1: loop reversed)
-    bool interior_all = false;
-    Ids interior;
     map<string, vector<string>> claims;
     vector<i64> covers;  // labels (e.g. configuration masks) this certificate stands for
 };
-struct Cursor {  // the lines of a file and the next one to read
-    const vector<Line>& lines;
-    size_t& at;
-    const Line& next() {
-        if (at >= lines.size()) fail("truncated: the file ends inside the certificate (no 'end')");
-        return lines[at++];
-    }
-};
-void read_domain(Cert& c, const Line& l) {  // box X0 Y0 Z0 X1 Y1 Z1 | torus P | none
+// box X0 Y0 Z0 X1 Y1 Z1 | torus P, kept as the box [0, P]^3 (hi: the period)
+void read_domain(Cert& c, const Line& l) {
     c.domain = l.tok.size() > 1 ? l.tok[1] : "";
     const bool box = c.domain == "box" && l.tok.size() == 8;
-    const bool torus = c.domain == "torus" && l.tok.size() == 3;
-    if (!box && !torus && !(c.domain == "none" && l.tok.size() == 2))
-        fail("line ", l.number, ": expected 'domain box X0 Y0 Z0 X1 Y1 Z1', 'torus P' or 'none'");
-    for (int a = 0; a < 3 && box; ++a) c.lo[a] = to_int(l.tok[2 + a], l.number, true);
-    for (int a = 0; a < 3 && box; ++a) c.hi[a] = to_int(l.tok[5 + a], l.number, true);
-    for (int a = 0; a < 3 && box; ++a)
-        if (c.hi[a] <= c.lo[a]) fail("line ", l.number, ": bad box (empty on axis ", a, ")");
-    if (torus) c.period = to_int(l.tok[2], l.number, true);
-    if (torus && (c.period < 2 || c.period % 2)) fail("line ", l.number, ": bad torus period");
-}
-void read_rows(Cert& c, Cursor& in, const Line& l) {  // "vertices|faces|cells N", N lines
-    const string& key = l.tok[0];
-    const size_t n = to_count(l, in.lines.size() - in.at);
-    for (size_t i = 0; i < n; ++i) {
-        const Line& r = in.next();
-        const int at = r.number;
-        if (key == "vertices" && r.tok.size() != 3) fail("line ", at, ": expected 'x y z'");
-        if (key == "vertices") c.pos.push_back({});
-        for (int a = 0; a < 3 && key == "vertices"; ++a)
-            c.pos.back()[a] = to_int(r.tok[a], at, true);
-        if (key == "faces" && r.tok.size() > kMaxFace) fail("line ", at, ": more than 64 vertices");
-        if (key == "faces") c.faces.push_back(to_ids(r.tok, at, c.pos.size(), false));
-        if (key == "cells") c.cells.push_back(to_ids(r.tok, at, c.faces.size(), true));
+    if (!box && !(c.domain == "torus" && l.tok.size() == 3))
+        fail("line ", l.number, ": expected 'domain box X0 Y0 Z0 X1 Y1 Z1' or 'domain torus P'");
+    for (int a = 0; a < 3; ++a) {
+        c.lo[a] = box ? to_int(l.tok[2 + a], l.number, true) : 0;
+        c.hi[a] = to_int(l.tok[box ? 5 + a : 2], l.number, true);
+        if (c.hi[a] <= c.lo[a]) fail("line ", l.number, ": empty domain on axis ", a);
     }
+    if (!box && c.hi[0] % 2) fail("line ", l.number, ": bad torus period (odd)");
 }
-// One section, starting at line l; `seen` holds the sections read so far, l's among them.
-void read_section(Cert& c, Cursor& in, const Line& l, const set<string>& seen) {
+// One line: a row (v x y z | f VERTEX-IDS | c SIGNED-FACE-IDS, ids counting the rows before
+// it from 0) or a section; a section other than `claim` is given at most once.
+void read_line(Cert& c, const Line& l, set<string>& seen) {
+    static const set<string> known{"v", "f", "c", "name", "kind", "domain", "claim", "covers"};
     const string& key = l.tok[0];
+    const vector<string> args(l.tok.begin() + 1, l.tok.end());
     const string at = cat("line ", l.number, ": ");
-    const bool all = key == "interior" && l.tok.size() == 2 && l.tok[1] == "all";
-    const set<string> known{"name", "kind", "domain", "vertices", "faces", "cells", "interior",
-                            "covers", "claim"};
     if (!known.count(key)) fail(at, "unknown keyword '", key, "'");
-    if ((key == "faces" && !seen.count("vertices")) || (key == "cells" && !seen.count("faces")))
-        fail(at, key, " before ", key == "faces" ? "vertices" : "faces");
-    if ((key == "name" || key == "kind") && l.tok.size() != 2) fail(at, "expected ", key, " WORD");
-    if (key == "claim" && (l.tok.size() < 2 || c.claims.count(l.tok[1]))) fail(at, "bad claim");
-    if (key == "name" || key == "kind") (key == "name" ? c.name : c.kind) = l.tok[1];
+    if (key.size() > 1 && key != "claim" && !seen.insert(key).second)
+        fail(at, "section '", key, "' given twice");
+    if (key == "v" && args.size() != 3) fail(at, "expected 'v x y z'");
+    if (key == "v") c.pos.push_back({});
+    for (int a = 0; a < 3 && key == "v"; ++a) c.pos.back()[a] = to_int(args[a], l.number, true);
+    if (key == "f" && args.size() > kMaxFace) fail(at, "more than 64 vertices");
+    if (key == "f") c.faces.push_back(to_ids(args, l.number, c.pos.size(), false));
+    if (key == "c") c.cells.push_back(to_ids(args, l.number, c.faces.size(), true));
+    if ((key == "name" || key == "kind") && args.size() != 1) fail(at, "expected ", key, " WORD");
+    if (key == "name" || key == "kind") (key == "name" ? c.name : c.kind) = args[0];
     if (key == "domain") read_domain(c, l);
-    if (key == "vertices" || key == "faces" || key == "cells") read_rows(c, in, l);
-    if (key == "claim") c.claims[l.tok[1]] = vector<string>(l.tok.begin() + 2, l.tok.end());
-    for (size_t i = 1; key == "covers" && i < l.tok.size(); ++i)
-        c.covers.push_back(to_int(l.tok[i], l.number));
-    c.interior_all = c.interior_all || all;
-    if (key != "interior" || all) return;
-    const size_t n = to_count(l, c.pos.size());  // the ids on any number of lines
-    vector<string> ids;
-    while (ids.size() < n) {
-        const Line& r = in.next();
-        ids.insert(ids.end(), r.tok.begin(), r.tok.end());
-    }
-    if (ids.size() != n) fail(at, "interior: more ids than the count");
-    c.interior = to_ids(ids, l.number, c.pos.size(), false);
+    if (key == "claim" && (args.empty() || c.claims.count(args[0]))) fail(at, "bad claim");
+    if (key == "claim") c.claims[args[0]] = vector<string>(args.begin() + 1, args.end());
+    for (size_t i = 0; key == "covers" && i < args.size(); ++i)
+        c.covers.push_back(to_int(args[i], l.number));
 }
-Cert parse(Cursor in) {  // the certificate at in.at (a `dualhex-certificate` line) to its `end`
+// The certificate from L[at] (its `dualhex-certificate 2` line) to its `end`; at: the line
+// after it, or on a Reject the failing line.
+Cert parse(const vector<Line>& L, size_t& at) {
     Cert c;
-    const int first = in.lines[in.at].number;
-    if (in.next().tok != vector<string>{"dualhex-certificate", "1"})
-        fail("line ", first, ": expected 'dualhex-certificate 1'");
+    if (L[at].tok != vector<string>{"dualhex-certificate", "2"})
+        fail("line ", L[at].number, ": expected 'dualhex-certificate 2'");
     set<string> seen;
-    for (const Line* l = &in.next(); l->tok[0] != "end"; l = &in.next()) {
-        if (l->tok[0] != "claim" && !seen.insert(l->tok[0]).second)
-            fail("line ", l->number, ": section '", l->tok[0], "' given twice");
-        read_section(c, in, *l, seen);
-    }
-    for (const char* s : {"name", "kind", "domain", "vertices", "faces", "cells", "interior"})
+    while (++at < L.size() && L[at].tok[0] != "end") read_line(c, L[at], seen);
+    if (at == L.size()) fail("truncated: the file ends inside the certificate (no 'end')");
+    ++at;
+    for (const char* s : {"name", "kind", "domain"})
         if (!seen.count(s)) fail("missing section '", s, "'");
     return c;
 }
@@ -204,8 +169,8 @@ bool same_direction(P3 x, P3 y) {
 }
 P3 nearest(const Cert& c, P3 p, P3 ref) {  // torus: the copy of p nearest to ref
     for (int a = 0; a < 3 && c.domain == "torus"; ++a) {
-        const i64 d = ((p[a] - ref[a]) % c.period + c.period) % c.period;
-        p[a] = ref[a] + (d > c.period / 2 ? d - c.period : d);
+        const i64 d = ((p[a] - ref[a]) % c.hi[a] + c.hi[a]) % c.hi[a];
+        p[a] = ref[a] + (d > c.hi[a] / 2 ? d - c.hi[a] : d);
     }
     return p;
 }
@@ -276,11 +241,10 @@ void check_cell(const Cert& c, Mesh& m, int k) {
     if (chi != 2) fail("cell ", k, " has V - E + F = ", chi, ", not 2 (not a sphere)");
 }
 // Every face in 1 or 2 cells, in 2 with opposite sides; a torus closed; every vertex at its
-// own position in the domain, on a face, declared interior iff on no boundary face.
+// own position in the domain and on a face. Records the boundary (faces of one cell).
 void check_conformity(const Cert& c, Mesh& m) {
     m.bdry_v.assign(c.pos.size(), 0);
     m.bdry_e.assign(m.edges.size(), 0);
-    vector<char> declared(c.pos.size(), c.interior_all);
     set<P3> seen;
     int boundary_faces = 0;
     for (int f = 0; f < len(c.faces); ++f) {
@@ -293,20 +257,12 @@ void check_conformity(const Cert& c, Mesh& m) {
         for (int e : m.face_edges[f]) m.bdry_e[e] = 1;
     }
     if (c.domain == "torus" && boundary_faces) fail("the torus has faces in one cell");
-    for (int v : c.interior) {
-        if (declared[v]) fail("interior vertex ", v, " listed twice");
-        declared[v] = 1;
-    }
     for (int v = 0; v < len(c.pos); ++v) {
-        for (int a = 0; a < 3 && c.domain != "none"; ++a) {  // in [lo, hi] or [0, period)
-            const bool torus = c.domain == "torus";
-            const i64 lo = torus ? 0 : c.lo[a], hi = torus ? c.period - 1 : c.hi[a];
-            if (c.pos[v][a] < lo || c.pos[v][a] > hi) fail("vertex ", v, " is outside the domain");
-        }
+        for (int a = 0; a < 3; ++a)  // in [lo, hi], on a torus in [0, period)
+            if (c.pos[v][a] < c.lo[a] || c.pos[v][a] > c.hi[a] - (c.domain == "torus"))
+                fail("vertex ", v, " is outside the domain");
         if (!seen.insert(c.pos[v]).second) fail("vertex ", v, " repeats an earlier position");
         if (m.v_faces[v].empty()) fail("vertex ", v, " is on no face");
-        if (declared[v] == m.bdry_v[v])
-            fail("vertex ", v, " is wrongly ", declared[v] ? "" : "not ", "declared interior");
     }
 }
 
@@ -357,19 +313,19 @@ void check_volumes(const Cert& c, const vector<FaceFan>& fans) {
             vol += (h % 2 ? -1 : 1) * dot(at(c.faces[h / 2][0]), fans[h / 2].area);
         }
         for (int a = 0; a < 3; ++a)
-            if (c.domain == "torus" && 2 * (hi[a] - lo[a]) >= c.period)
+            if (c.domain == "torus" && 2 * (hi[a] - lo[a]) >= c.hi[a])
                 fail("cell ", k, " spans half the torus period");
         if (vol <= 0) fail("cell ", k, " has non-positive volume (6V = ", str(vol), ")");
         total += vol;
     }
     i128 expect = 6;
-    for (int a = 0; a < 3; ++a) expect *= c.domain == "torus" ? c.period : c.hi[a] - c.lo[a];
+    for (int a = 0; a < 3; ++a) expect *= c.hi[a] - c.lo[a];
     if (total != expect) fail("6 x the volumes sum to ", str(total), ", not ", str(expect));
 }
-// In a box every boundary face lies on a box face and faces outward, their twice-areas tile
-// each box face, and no face of two cells lies on the box boundary.
+// In a box every boundary face lies on a box face and faces outward, and no face of two cells
+// lies on the box boundary; with the volume sum, the boundary faces then tile each box face
+// exactly once (proofs/README.md, "The checker").
 void check_box_boundary(const Cert& c, const Mesh& m, const vector<FaceFan>& fans) {
-    i128 tiled[6] = {0, 0, 0, 0, 0, 0};
     for (int f = 0; f < len(c.faces); ++f) {
         int on = 63, plane = -1;  // bit p: f is on box face p (axis p / 2, at lo if p is even)
         for (int v : c.faces[f])
@@ -381,14 +337,8 @@ void check_box_boundary(const Cert& c, const Mesh& m, const vector<FaceFan>& fan
         if (shared) continue;
         if (plane < 0) fail("face ", f, " is a boundary face off the box boundary (a hole)");
         const bool flip = (plane % 2 == 0) != (m.face_cells[f][0].second == 1);
-        const i64 out = (flip ? -1 : 1) * fans[f].area[plane / 2];  // twice the area, outward
-        if (out <= 0) fail("face ", f, " on the box boundary does not face outward");
-        tiled[plane] += out;
-    }
-    for (int p = 0; p < 6; ++p) {
-        const int a = (p / 2 + 1) % 3, b = (p / 2 + 2) % 3;
-        if (tiled[p] != 2 * i128{c.hi[a] - c.lo[a]} * (c.hi[b] - c.lo[b]))
-            fail("box face ", p, " is not tiled: twice-area ", str(tiled[p]));
+        if ((flip ? -1 : 1) * fans[f].area[plane / 2] <= 0)  // twice the area, outward
+            fail("face ", f, " on the box boundary does not face outward");
     }
 }
 // The uses of edge e = (a, b) in turning order: from a cell one crosses its face walking
@@ -488,44 +438,30 @@ void check_kind(const Cert& c) {  // the kind fixes the domain and the minimum c
     if (!domain.empty() && c.domain != domain) fail("kind ", c.kind, " needs domain ", domain);
     for (const string& claim : needed)
         if (!c.claims.count(claim)) fail("kind ", c.kind, " must claim '", claim, "'");
-    const set<string> known{"subdivision", "valences", "all-hex-dual", "counts", "face-sizes",
-                            "dual-valences", "interior-vertices"};
-    for (const auto& [claim, args] : c.claims)
-        if (!known.count(claim)) fail("unknown claim '", claim, "'");
-    if (c.claims.count("subdivision") && c.domain == "none") fail("subdivision needs a domain");
 }
-map<i64, i64> parse_hist(const vector<string>& args) {  // "K:N ...", N > 0, each K once
-    map<i64, i64> h;
-    for (const string& a : args) {
-        const auto colon = a.find(':');
-        if (colon == string::npos) fail("histogram entry '", a, "' is not K:N");
-        const i64 k = to_int(a.substr(0, colon), 0), n = to_int(a.substr(colon + 1), 0);
-        if (n <= 0 || h.count(k)) fail("histogram entry '", a, "' repeated or not positive");
-        h[k] = n;
-    }
-    return h;
-}
-// The counted claims: face-sizes, dual-valences (the sizes of the faces of two cells whose
-// vertices are all interior), counts and interior-vertices equal the computed values.
-void check_counts(const Cert& c, const Mesh& m, const Stats& st) {
-    map<string, map<i64, i64>> hists;
+// Every claim is followed by exactly what the checker computes: nothing after a property it
+// checks; the values after a counted one, histograms as K:N in increasing K, N > 0 (face-sizes;
+// dual-valences: the sizes of the faces of two cells whose vertices are all interior).
+void check_claims(const Cert& c, const Mesh& m, const Stats& st) {
+    map<string, vector<string>> is;
+    for (const char* k : {"subdivision", "valences", "all-hex-dual", "face-sizes", "dual-valences"})
+        is[k] = {};
+    for (int i : {kVertices, kEdges, kFaces, kCells}) is["counts"].push_back(cat(st[i]));
+    is["interior-vertices"] = {cat(st[kInnerVertices])};
+    map<int, int> sizes, inner;
+    const auto on_boundary = [&](int v) { return m.bdry_v[v]; };
     for (int f = 0; f < len(c.faces); ++f) {
-        bool inner = m.face_cells[f].size() == 2;
-        for (int v : c.faces[f]) inner = inner && !m.bdry_v[v];
-        ++hists["face-sizes"][len(c.faces[f])];
-        if (inner) ++hists["dual-valences"][len(c.faces[f])];
+        ++sizes[len(c.faces[f])];
+        if (m.face_cells[f].size() == 2 && std::ranges::none_of(c.faces[f], on_boundary))
+            ++inner[len(c.faces[f])];
     }
-    for (const char* claim : {"face-sizes", "dual-valences"})
-        if (c.claims.count(claim) && parse_hist(c.claims.at(claim)) != hists[claim])
-            fail("claim ", claim, " does not equal the computed histogram");
-    const map<string, Ids> values{{"counts", {kVertices, kEdges, kFaces, kCells}},
-                                  {"interior-vertices", {kInnerVertices}}};
-    for (const auto& [claim, which] : values) {
-        const auto said = c.claims.find(claim);
-        bool same = said == c.claims.end() || said->second.size() == which.size();
-        for (int i = 0; same && said != c.claims.end() && i < len(which); ++i)
-            same = to_int(said->second[i], 0) == static_cast<i64>(st[which[i]]);
-        if (!same) fail("claim ", claim, " does not equal the computed value");
+    for (auto [k, n] : sizes) is["face-sizes"].push_back(cat(k, ":", n));
+    for (auto [k, n] : inner) is["dual-valences"].push_back(cat(k, ":", n));
+    for (const auto& [claim, args] : c.claims) {
+        if (!is.count(claim)) fail("unknown claim '", claim, "'");
+        string computed;
+        for (const string& t : is[claim]) computed += " " + t;
+        if (args != is[claim]) fail("a claim is not the computed '", claim, computed, "'");
     }
 }
 Stats check(const Cert& c) {
@@ -556,7 +492,7 @@ Stats check(const Cert& c) {
         if (!m.bdry_e[e] && len(fan_around(c, m, e).first) != 5)
             fail(m.edge_name(e), " is interior but not in a cycle of 4 cells");
     }
-    check_counts(c, m, st);
+    check_claims(c, m, st);
     return st;
 }
 
@@ -578,7 +514,7 @@ size_t check_file(const string& path, const string& text, Totals& t, const strin
         const size_t first = at;
         string label = cat(path, ": certificate #", ++n);
         try {
-            const Cert c = parse(Cursor{L, at});
+            const Cert c = parse(L, at);
             label = cat(path, ":", L[first].number, ": certificate ", c.name);
             if (!t.names.insert(c.name).second) fail("the name ", c.name, " is used twice");
             const Stats s = check(c);
@@ -590,7 +526,7 @@ size_t check_file(const string& path, const string& text, Totals& t, const strin
         } catch (const Reject& r) {
             std::cout << "REJECTED " << label << ": " << r.why << '\n';
             ++t.rejected;
-            at = std::max(at, first + 1);  // resume after the failing line, at the next certificate
+            at = std::max(at, first + 1);  // resume at the next header from the failing line on
             while (at < L.size() && L[at].tok[0] != "dualhex-certificate") ++at;
         }
     }
@@ -612,28 +548,13 @@ string read_file(const std::filesystem::path& p, std::uintmax_t& budget) {
     budget -= size;
     return out;
 }
-// A manifest line `file NAME COUNT KIND fnv1a64 HEX`: the file read, hashed and checked.
-void check_listed(const std::filesystem::path& p, const vector<string>& tok, Totals& t, size_t& n) {
-    const string body = read_file(p, t.budget);
-    std::uint64_t hash = 14695981039346656037ull;  // FNV-1a 64
-    for (unsigned char ch : body) hash = (hash ^ ch) * 1099511628211ull;
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-    if (tok[5] != hex) fail(p.string(), ": FNV-1a 64 hash is ", hex, ", not ", tok[5]);
-    const size_t rejected = t.rejected, held = check_file(p.string(), body, t, tok[3]);
-    n += held;
-    std::cout << tok[1] << ": " << held << " certificates, hash ok, ";
-    std::cout << held - (t.rejected - rejected) << " verified\n";
-    if (std::to_string(held) != tok[2])
-        fail(p.string(), " holds ", held, " certificates, not ", tok[2]);
-}
-// One manifest: every listed file checked, the pinned total and covers; problems counted.
+// One manifest: every listed file read, hashed and checked, the pinned total and covers.
 void check_manifest(const std::filesystem::path& manifest, const string& text, Totals& t) {
     const vector<Line> L = tokenize(text);
     i64 total = -1;
     size_t listed = 0, files = 0;
     auto bad = [&](int line, const string& why) {
-        std::cout << "REJECTED " << manifest.string() << ":" << line << ": " << why << '\n';
+        std::cout << "REJECTED " << cat(manifest.string(), ":", line, ": ", why) << '\n';
         ++t.problems;
     };
     const bool head = !L.empty() && L[0].tok == vector<string>{"dualhex-manifest", "1"};
@@ -647,12 +568,22 @@ void check_manifest(const std::filesystem::path& manifest, const string& text, T
                 if (slot >= 0 || v < 0 || v > i64{1} << 40)
                     fail(tok[0], " given twice, negative or absurd");
                 slot = v;
-            } else if (tok[0] != "file" || tok.size() != 6 || tok[4] != "fnv1a64") {
-                fail("expected 'total N', 'covers N' or 'file NAME COUNT KIND fnv1a64 HEX'");
-            } else {
-                ++files;
-                check_listed(manifest.parent_path() / tok[1], tok, t, listed);
+                continue;
             }
+            if (tok[0] != "file" || tok.size() != 6 || tok[4] != "fnv1a64")
+                fail("expected 'total N', 'covers N' or 'file NAME COUNT KIND fnv1a64 HEX'");
+            ++files;
+            const string p = (manifest.parent_path() / tok[1]).string();
+            const string body = read_file(p, t.budget);
+            std::uint64_t hash = 14695981039346656037ull;  // FNV-1a 64
+            for (unsigned char ch : body) hash = (hash ^ ch) * 1099511628211ull;
+            const string hex = cat(std::hex, std::setfill('0'), std::setw(16), hash);
+            if (tok[5] != hex) fail(p, ": FNV-1a 64 hash is ", hex, ", not ", tok[5]);
+            const size_t rejected = t.rejected, held = check_file(p, body, t, tok[3]);
+            listed += held;
+            std::cout << tok[1] << ": " << held << " certificates, hash ok, ";
+            std::cout << held - (t.rejected - rejected) << " verified\n";
+            if (cat(held) != tok[2]) fail(p, " holds ", held, " certificates, not ", tok[2]);
         } catch (const Reject& r) {
             bad(L[i].number, r.why);
         }
@@ -666,12 +597,10 @@ void check_manifest(const std::filesystem::path& manifest, const string& text, T
     if (t.covers < 0 && !t.covered.empty())
         bad(0, "certificates carry covers lines but the manifest pins no 'covers N'");
 }
-string with_commas(size_t n) {
-    const string d = std::to_string(n);
-    string s;
-    for (int i = 0; i < len(d); ++i) s += (i && (len(d) - i) % 3 == 0 ? "," : "") + string(1, d[i]);
-    return s;
-}
+struct Commas : std::numpunct<char> {  // the summary's numbers as 19,152
+    char do_thousands_sep() const override { return ','; }
+    string do_grouping() const override { return "\3"; }
+};
 // The whole run on argv-style arguments; prints the verdict, returns the exit code.
 int run(const vector<string>& args) {
     const bool usage = args.empty() || args.size() > 2 || args[0] == "--help";
@@ -693,9 +622,10 @@ int run(const vector<string>& args) {
         std::cout << args[1] << ": " << n << " certificates";
         std::cout << " (covers lines are checked only with a manifest)\n";
     }
-    auto w = [&](Count i, const char* what) { return cat(with_commas(t.sum[i]), what); };
-    std::cout << "parsed: " << t.certificates << " certificates, " << w(kVertices, " vertices, ")
-              << w(kEdges, " edges, ") << w(kFaces, " faces, ") << w(kCells, " cells\n");
+    const Stats& s = t.sum;
+    std::cout.imbue(std::locale(std::cout.getloc(), new Commas));
+    std::cout << "parsed: " << t.certificates << " certificates, " << s[kVertices] << " vertices, "
+              << s[kEdges] << " edges, " << s[kFaces] << " faces, " << s[kCells] << " cells\n";
     if (t.rejected || t.problems || t.certificates == 0) {
         std::cout << "FAILED: " << t.rejected << " certificates rejected, ";
         std::cout << t.problems << " manifest problems\n";
@@ -704,10 +634,11 @@ int run(const vector<string>& args) {
     std::cout << "VERIFIED:";
     for (const auto& [kind, n] : t.kinds) std::cout << ' ' << n << ' ' << kind << " certificates,";
     const size_t labels = t.covered.size();
-    if (t.covers >= 0) std::cout << " covering " << labels << " labels (0.." << labels - 1 << "),";
-    std::cout << ' ' << w(kInnerVertices, " interior vertices (")
-              << w(kCubes, " cube dual cells), ") << w(kInnerEdges, " interior edges checked, ")
-              << w(kWound, " edges locally injective\n");
+    if (t.covers >= 0)
+        std::cout << " covering " << labels << " labels (0.." << cat(labels - 1) << "),";
+    std::cout << ' ' << s[kInnerVertices] << " interior vertices (" << s[kCubes]
+              << " cube dual cells), " << s[kInnerEdges] << " interior edges checked, " << s[kWound]
+              << " edges locally injective\n";
     return 0;
 }
 }  // namespace

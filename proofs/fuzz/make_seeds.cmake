@@ -2,7 +2,7 @@
 # file per shipped element certificate, the smallest strong torus, and the shipped manifest.
 file(MAKE_DIRECTORY ${OUT})
 file(READ ${SHIPPED}/elements.cert text)
-string(REPLACE "dualhex-certificate 1\n" ";dualhex-certificate 1\n" parts "${text}")
+string(REPLACE "dualhex-certificate 2\n" ";dualhex-certificate 2\n" parts "${text}")
 set(n 0)
 foreach(part IN LISTS parts)
   if(part MATCHES "^dualhex-certificate")

@@ -6,20 +6,20 @@
 // computed from the complex by dualhex's topology code; whether it is TRUE is for the
 // independent checker to decide.
 //
-// Format version 1:
-//   dualhex-certificate 1
+// Format version 2:
+//   dualhex-certificate 2
 //   name NAME
 //   kind element|configuration|installation|histogram
-//   domain box X0 Y0 Z0 X1 Y1 Z1 | domain torus P | domain none
-//   vertices N      then N lines "x y z"             (vertex ids 0..N-1)
-//   faces N         then N lines "v0 v1 v2 ..."      (face ids 0..N-1)
-//   cells N         then N lines "+f -g ..."         (+f: face f's loop as written is
+//   domain box X0 Y0 Z0 X1 Y1 Z1 | domain torus P
+//   v x y z         one line per vertex               (vertex ids 0, 1, ... in order)
+//   f v0 v1 v2 ...  one line per face: a vertex loop  (face ids 0, 1, ...)
+//   c +f -g ...     one line per cell: signed faces   (+f: face f's loop as written is
 //                                                     counter-clockwise seen from outside)
-//   interior all | interior K  then K vertex ids (any line breaks)
 //   covers L1 L2 ...   (optional) the labels this certificate stands for
 //   claim subdivision | valences | all-hex-dual | counts V E F C |
 //         face-sizes K:N ... | dual-valences K:N ... | interior-vertices N
 //   end
+// (interior vertices are those on no face of one cell: the checker computes them.)
 // A file may hold several certificates; a manifest lists the files:
 //   dualhex-manifest 1
 //   total N
@@ -52,13 +52,13 @@ inline constexpr std::int64_t kCertificateMaxCoordinate = std::int64_t{1} << 19;
 class ElementLibrary;
 class TransitionRule;
 
-inline constexpr int kCertificateFormatVersion = 1;
+inline constexpr int kCertificateFormatVersion = 2;
 
 enum class CertificateKind { Element, Configuration, Installation, Histogram };
 [[nodiscard]] const char* to_string(CertificateKind kind);
 
 struct CertificateDomain {
-    enum class Type { Box, Torus, None } type = Type::None;
+    enum class Type { Box, Torus } type = Type::Box;
     LatticePoint lo, hi;     ///< Box: the box [lo, hi]
     std::int64_t period = 0; ///< Torus: vertex coordinates are residues modulo period (all axes)
 
