@@ -6,6 +6,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
+
+#include <tbb/parallel_for.h>
 
 #include "dualhex/install/element_templates.hpp"
 #include "compositional_windows.hpp"
@@ -48,6 +51,25 @@ Index3 octant_of(const LatticePoint& leaf) {
     return {detail::floor_div(leaf.x, 2), detail::floor_div(leaf.y, 2), detail::floor_div(leaf.z, 2)};
 }
 
+// WindowType::read_of's table.
+static void index_reads(WindowType& t) {
+    for (std::size_t a = 0; a < 3; ++a) {
+        t.read_box_min[a] = t.reads.front()[a];
+        for (const Index3& o : t.reads) t.read_box_min[a] = std::min(t.read_box_min[a], o[a]);
+    }
+    constexpr auto kBox = WindowType::kReadBox;
+    t.read_slot.assign(static_cast<std::size_t>(kBox * kBox * kBox), -1);
+    for (std::size_t i = 0; i < t.reads.size(); ++i) {
+        std::size_t at = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const std::int64_t d = t.reads[i][a] - t.read_box_min[a];
+            if (d >= kBox) throw std::length_error("compositional: the octants read span more than 8 per axis");
+            at = at * kBox + static_cast<std::size_t>(d);
+        }
+        t.read_slot[at] = static_cast<std::int8_t>(i);
+    }
+}
+
 WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& rule) {
     WindowType t;
     t.parity = parity;
@@ -69,6 +91,7 @@ WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& r
         mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
     }
     if (t.reads.size() > 63) throw std::length_error("compositional: more than 63 octants read by one window");
+    index_reads(t);
     return t;
 }
 
@@ -82,9 +105,8 @@ private:
 };
 
 bool fine_in(const WindowType& t, std::uint64_t pattern, const Index3& o) {
-    for (std::size_t i = 0; i < t.reads.size(); ++i)
-        if (t.reads[i] == o) return (pattern >> i) & 1U;
-    return false;  // not read by the rule: its value cannot matter (reach)
+    const int i = t.read_of(o);
+    return i >= 0 && ((pattern >> i) & 1U);  // not read by the rule: its value cannot matter (reach)
 }
 
 // Per leaf: the outcome of each assignment of the leaf's own read octants (bit j: read_index[j]).
@@ -127,62 +149,118 @@ std::uint64_t gather(std::uint64_t pattern, const std::vector<int>& indices) {
     return a;
 }
 
+// The parts of a type's octants: those several leaves read (shared) and, per leaf, those
+// only it reads (private).
+struct ReadSplit {
+    std::vector<int> shared;
+    std::array<std::vector<int>, kLeaves> private_bits;
+};
+
+ReadSplit split_reads(const WindowType& t) {
+    std::vector<int> readers(t.reads.size(), 0);
+    for (const auto& mine : t.read_index)
+        for (int i : mine) ++readers[static_cast<std::size_t>(i)];
+    ReadSplit out;
+    for (std::size_t i = 0; i < t.reads.size(); ++i)
+        if (readers[i] > 1) out.shared.push_back(static_cast<int>(i));
+    for (int n = 0; n < kLeaves; ++n)
+        for (int i : t.read_index[static_cast<std::size_t>(n)])
+            if (readers[static_cast<std::size_t>(i)] == 1) out.private_bits[static_cast<std::size_t>(n)].push_back(i);
+    return out;
+}
+
+// gather(pattern, read_index[n]) for every leaf n, by tables over the pattern's bytes (the
+// enumeration gathers once per leaf for each of up to 2^19 shared assignments).
+class LeafGather {
+public:
+    explicit LeafGather(const WindowType& t) {
+        for (std::size_t n = 0; n < kLeaves; ++n)
+            for (std::size_t k = 0; k < kBytes; ++k)
+                for (std::uint64_t v = 0; v < 256; ++v) bytes_[n][k][v] = static_cast<std::uint32_t>(gather(v << (8 * k), t.read_index[n]));
+    }
+    [[nodiscard]] std::uint64_t operator()(std::size_t n, std::uint64_t pattern) const {
+        std::uint64_t a = 0;
+        for (std::size_t k = 0; k < kBytes; ++k) a |= bytes_[n][k][(pattern >> (8 * k)) & 255U];
+        return a;
+    }
+
+private:
+    static constexpr std::size_t kBytes = 8;  // reads <= 63 (window_type)
+    std::vector<std::array<std::array<std::uint32_t, 256>, kBytes>> bytes_ = std::vector<std::array<std::array<std::uint32_t, 256>, kBytes>>(kLeaves);  // 64 KB: not on a task's stack
+};
+
+// Per leaf: its distinct outcomes over its private octants, with a witness each (reused
+// from one base to the next).
+using Choices = std::array<std::vector<std::pair<int, std::uint64_t>>, kLeaves>;
+
+// Calls emit(signature, pattern) for every window whose shared octants are the base: for
+// each leaf, its private octants (read by no other leaf) only change its own outcome, so
+// the windows are the product of per-leaf choices (one witness per distinct outcome).
+template <class Emit>
+void windows_over_base(const ReadSplit& split, const std::array<std::vector<int>, kLeaves>& tables,
+                       const LeafGather& leaf_gather, std::uint64_t base, Choices& choices, Emit&& emit) {
+    for (std::size_t n = 0; n < kLeaves; ++n) {
+        const auto& priv = split.private_bits[n];
+        auto& mine = choices[n];
+        mine.clear();
+        for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv.size()); ++q) {
+            std::uint64_t extra = 0;
+            for (std::size_t j = 0; j < priv.size(); ++j)
+                if ((q >> j) & 1U) extra |= std::uint64_t{1} << priv[j];
+            const int o = tables[n][leaf_gather(n, base | extra)];
+            if (std::none_of(mine.begin(), mine.end(), [o](const auto& c) { return c.first == o; })) mine.emplace_back(o, extra);
+        }
+    }
+    std::array<std::size_t, kLeaves> at{};  // odometer over the product of the choices
+    for (bool more = true; more;) {
+        Signature sig{};
+        std::uint64_t pattern = base;
+        for (std::size_t n = 0; n < kLeaves; ++n) {
+            const auto& c = choices[n][at[n]];
+            sig[n] = c.first;
+            pattern |= c.second;
+        }
+        emit(sig, pattern);
+        more = false;
+        for (std::size_t n = 0; n < kLeaves && !more; ++n) {
+            if (++at[n] < choices[n].size()) more = true;
+            else at[n] = 0;
+        }
+    }
+}
+
 // Every distinct window of a type with one witness pattern each: the shared octants are
-// enumerated jointly; for each leaf, its private octants (read by no other leaf) only
-// change its own outcome, so the window's outcomes are the product of per-leaf choices.
+// enumerated jointly (windows_over_base), in chunks in parallel; each chunk keeps its first
+// pattern per signature, in order, and the chunks are merged in order, so the witnesses and
+// their order are those of the serial enumeration.
 std::vector<std::uint64_t> distinct_windows(const WindowType& t, const TransitionRule& rule, int& shared_count) {
     Outcomes outcomes;
     std::array<std::vector<int>, kLeaves> tables;
     for (int n = 0; n < kLeaves; ++n) tables[static_cast<std::size_t>(n)] = outcome_table(t, n, rule, outcomes);
-    std::vector<int> readers(t.reads.size(), 0);
-    for (const auto& mine : t.read_index)
-        for (int i : mine) ++readers[static_cast<std::size_t>(i)];
-    std::vector<int> shared;
-    std::array<std::vector<int>, kLeaves> private_bits;
-    for (std::size_t i = 0; i < t.reads.size(); ++i)
-        if (readers[i] > 1) shared.push_back(static_cast<int>(i));
-    for (int n = 0; n < kLeaves; ++n)
-        for (int i : t.read_index[static_cast<std::size_t>(n)])
-            if (readers[static_cast<std::size_t>(i)] == 1) private_bits[static_cast<std::size_t>(n)].push_back(i);
-    shared_count = static_cast<int>(shared.size());
-
-    std::unordered_map<Signature, std::uint64_t, SignatureHash> seen;
+    const ReadSplit split = split_reads(t);
+    shared_count = static_cast<int>(split.shared.size());
+    const std::uint64_t bases = std::uint64_t{1} << split.shared.size();
+    constexpr std::uint64_t kChunk = 4096;
+    using Firsts = std::vector<std::pair<Signature, std::uint64_t>>;
+    std::vector<Firsts> chunks(static_cast<std::size_t>((bases + kChunk - 1) / kChunk));
+    const LeafGather leaf_gather(t);
+    tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+        std::unordered_set<Signature, SignatureHash> seen;
+        Choices choices;
+        for (std::uint64_t s = c * kChunk; s < std::min(bases, (c + 1) * kChunk); ++s) {
+            std::uint64_t base = 0;
+            for (std::size_t j = 0; j < split.shared.size(); ++j)
+                if ((s >> j) & 1U) base |= std::uint64_t{1} << split.shared[j];
+            windows_over_base(split, tables, leaf_gather, base, choices, [&](const Signature& sig, std::uint64_t pattern) {
+                if (seen.insert(sig).second) chunks[c].emplace_back(sig, pattern);
+            });
+        }
+    });
+    std::unordered_set<Signature, SignatureHash> seen;
     std::vector<std::uint64_t> witnesses;
-    for (std::uint64_t s = 0; s < (std::uint64_t{1} << shared.size()); ++s) {
-        std::uint64_t base = 0;
-        for (std::size_t j = 0; j < shared.size(); ++j)
-            if ((s >> j) & 1U) base |= std::uint64_t{1} << shared[j];
-        // per leaf: its distinct outcomes over its private octants, with a witness each
-        std::array<std::vector<std::pair<int, std::uint64_t>>, kLeaves> choices;
-        for (int n = 0; n < kLeaves; ++n) {
-            const auto& priv = private_bits[static_cast<std::size_t>(n)];
-            auto& mine = choices[static_cast<std::size_t>(n)];
-            for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv.size()); ++q) {
-                std::uint64_t extra = 0;
-                for (std::size_t j = 0; j < priv.size(); ++j)
-                    if ((q >> j) & 1U) extra |= std::uint64_t{1} << priv[j];
-                const int o = tables[static_cast<std::size_t>(n)][gather(base | extra, t.read_index[static_cast<std::size_t>(n)])];
-                if (std::none_of(mine.begin(), mine.end(), [o](const auto& c) { return c.first == o; })) mine.emplace_back(o, extra);
-            }
-        }
-        std::array<std::size_t, kLeaves> at{};  // odometer over the product of the choices
-        for (bool more = true; more;) {
-            Signature sig{};
-            std::uint64_t pattern = base;
-            for (int n = 0; n < kLeaves; ++n) {
-                const auto& c = choices[static_cast<std::size_t>(n)][at[static_cast<std::size_t>(n)]];
-                sig[static_cast<std::size_t>(n)] = c.first;
-                pattern |= c.second;
-            }
-            if (seen.emplace(sig, pattern).second) witnesses.push_back(pattern);
-            more = false;
-            for (int n = 0; n < kLeaves && !more; ++n) {
-                auto& k = at[static_cast<std::size_t>(n)];
-                if (++k < choices[static_cast<std::size_t>(n)].size()) more = true;
-                else k = 0;
-            }
-        }
-    }
+    for (const Firsts& chunk : chunks)
+        for (const auto& [sig, pattern] : chunk)
+            if (seen.insert(sig).second) witnesses.push_back(pattern);
     return witnesses;
 }
 

@@ -22,6 +22,21 @@ struct WindowType {
     std::vector<Index3> reads;                 // R(t)
     std::array<std::vector<int>, kLeaves> read_index;  // per leaf: indices into reads
     std::array<int, kLeaves> own{};            // per leaf: its own octant's index
+    /// The index in reads of octant o, or -1 if no leaf reads it. A dense table over the
+    /// box of the reads: the rule asks for octants millions of times (a linear search of
+    /// reads was a quarter of the run).
+    [[nodiscard]] int read_of(const Index3& o) const {
+        std::size_t at = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const std::int64_t d = o[a] - read_box_min[a];
+            if (d < 0 || d >= kReadBox) return -1;
+            at = at * kReadBox + static_cast<std::size_t>(d);
+        }
+        return read_slot[at];
+    }
+    static constexpr std::int64_t kReadBox = 8;  // octants read lie within 8 of each other per axis
+    Index3 read_box_min{};
+    std::vector<std::int8_t> read_slot;  // kReadBox^3 entries, filled by window_type
 };
 
 [[nodiscard]] std::vector<int> reach_bits(const TransitionRule& rule);
