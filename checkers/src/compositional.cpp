@@ -6,11 +6,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
-#include <unordered_set>
-
-#include <tbb/parallel_for.h>
 
 #include "dualhex/install/element_templates.hpp"
+#include "compositional_products.hpp"
 #include "compositional_windows.hpp"
 
 namespace dualhex {
@@ -51,22 +49,20 @@ Index3 octant_of(const LatticePoint& leaf) {
     return {detail::floor_div(leaf.x, 2), detail::floor_div(leaf.y, 2), detail::floor_div(leaf.z, 2)};
 }
 
-// WindowType::read_of's table.
-static void index_reads(WindowType& t) {
-    for (std::size_t a = 0; a < 3; ++a) {
-        t.read_box_min[a] = t.reads.front()[a];
-        for (const Index3& o : t.reads) t.read_box_min[a] = std::min(t.read_box_min[a], o[a]);
+OctantIndex::OctantIndex(const std::vector<Index3>& octants) {
+    if (octants.size() > 127) throw std::length_error("octant index: more than 127 octants");
+    for (std::size_t a = 0; a < 3 && !octants.empty(); ++a) {
+        min_[a] = octants.front()[a];
+        for (const Index3& o : octants) min_[a] = std::min(min_[a], o[a]);
     }
-    constexpr auto kBox = WindowType::kReadBox;
-    t.read_slot.assign(static_cast<std::size_t>(kBox * kBox * kBox), -1);
-    for (std::size_t i = 0; i < t.reads.size(); ++i) {
+    for (std::size_t i = 0; i < octants.size(); ++i) {
         std::size_t at = 0;
         for (std::size_t a = 0; a < 3; ++a) {
-            const std::int64_t d = t.reads[i][a] - t.read_box_min[a];
-            if (d >= kBox) throw std::length_error("compositional: the octants read span more than 8 per axis");
+            const std::int64_t d = octants[i][a] - min_[a];
+            if (d >= kBox) throw std::length_error("octant index: the octants span more than 8 per axis");
             at = at * kBox + static_cast<std::size_t>(d);
         }
-        t.read_slot[at] = static_cast<std::int8_t>(i);
+        slot_[at] = static_cast<std::int8_t>(i);
     }
 }
 
@@ -91,7 +87,7 @@ WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& r
         mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
     }
     if (t.reads.size() > 63) throw std::length_error("compositional: more than 63 octants read by one window");
-    index_reads(t);
+    t.read_of = OctantIndex(t.reads);
     return t;
 }
 
@@ -134,134 +130,15 @@ std::vector<int> outcome_table(const WindowType& t, int n, const TransitionRule&
     return table;
 }
 
-using Signature = std::array<int, kLeaves>;
-struct SignatureHash {
-    std::size_t operator()(const Signature& s) const {
-        std::size_t h = 1469598103934665603ULL;
-        for (int x : s) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ULL;
-        return h;
-    }
-};
-
-std::uint64_t gather(std::uint64_t pattern, const std::vector<int>& indices) {
-    std::uint64_t a = 0;
-    for (std::size_t j = 0; j < indices.size(); ++j) a |= ((pattern >> indices[j]) & 1U) << j;
-    return a;
-}
-
-// The parts of a type's octants: those several leaves read (shared) and, per leaf, those
-// only it reads (private).
-struct ReadSplit {
-    std::vector<int> shared;
-    std::array<std::vector<int>, kLeaves> private_bits;
-};
-
-ReadSplit split_reads(const WindowType& t) {
-    std::vector<int> readers(t.reads.size(), 0);
-    for (const auto& mine : t.read_index)
-        for (int i : mine) ++readers[static_cast<std::size_t>(i)];
-    ReadSplit out;
-    for (std::size_t i = 0; i < t.reads.size(); ++i)
-        if (readers[i] > 1) out.shared.push_back(static_cast<int>(i));
-    for (int n = 0; n < kLeaves; ++n)
-        for (int i : t.read_index[static_cast<std::size_t>(n)])
-            if (readers[static_cast<std::size_t>(i)] == 1) out.private_bits[static_cast<std::size_t>(n)].push_back(i);
-    return out;
-}
-
-// gather(pattern, read_index[n]) for every leaf n, by tables over the pattern's bytes (the
-// enumeration gathers once per leaf for each of up to 2^19 shared assignments).
-class LeafGather {
-public:
-    explicit LeafGather(const WindowType& t) {
-        for (std::size_t n = 0; n < kLeaves; ++n)
-            for (std::size_t k = 0; k < kBytes; ++k)
-                for (std::uint64_t v = 0; v < 256; ++v) bytes_[n][k][v] = static_cast<std::uint32_t>(gather(v << (8 * k), t.read_index[n]));
-    }
-    [[nodiscard]] std::uint64_t operator()(std::size_t n, std::uint64_t pattern) const {
-        std::uint64_t a = 0;
-        for (std::size_t k = 0; k < kBytes; ++k) a |= bytes_[n][k][(pattern >> (8 * k)) & 255U];
-        return a;
-    }
-
-private:
-    static constexpr std::size_t kBytes = 8;  // reads <= 63 (window_type)
-    std::vector<std::array<std::array<std::uint32_t, 256>, kBytes>> bytes_ = std::vector<std::array<std::array<std::uint32_t, 256>, kBytes>>(kLeaves);  // 64 KB: not on a task's stack
-};
-
-// Per leaf: its distinct outcomes over its private octants, with a witness each (reused
-// from one base to the next).
-using Choices = std::array<std::vector<std::pair<int, std::uint64_t>>, kLeaves>;
-
-// Calls emit(signature, pattern) for every window whose shared octants are the base: for
-// each leaf, its private octants (read by no other leaf) only change its own outcome, so
-// the windows are the product of per-leaf choices (one witness per distinct outcome).
-template <class Emit>
-void windows_over_base(const ReadSplit& split, const std::array<std::vector<int>, kLeaves>& tables,
-                       const LeafGather& leaf_gather, std::uint64_t base, Choices& choices, Emit&& emit) {
-    for (std::size_t n = 0; n < kLeaves; ++n) {
-        const auto& priv = split.private_bits[n];
-        auto& mine = choices[n];
-        mine.clear();
-        for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv.size()); ++q) {
-            std::uint64_t extra = 0;
-            for (std::size_t j = 0; j < priv.size(); ++j)
-                if ((q >> j) & 1U) extra |= std::uint64_t{1} << priv[j];
-            const int o = tables[n][leaf_gather(n, base | extra)];
-            if (std::none_of(mine.begin(), mine.end(), [o](const auto& c) { return c.first == o; })) mine.emplace_back(o, extra);
-        }
-    }
-    std::array<std::size_t, kLeaves> at{};  // odometer over the product of the choices
-    for (bool more = true; more;) {
-        Signature sig{};
-        std::uint64_t pattern = base;
-        for (std::size_t n = 0; n < kLeaves; ++n) {
-            const auto& c = choices[n][at[n]];
-            sig[n] = c.first;
-            pattern |= c.second;
-        }
-        emit(sig, pattern);
-        more = false;
-        for (std::size_t n = 0; n < kLeaves && !more; ++n) {
-            if (++at[n] < choices[n].size()) more = true;
-            else at[n] = 0;
-        }
-    }
-}
-
-// Every distinct window of a type with one witness pattern each: the shared octants are
-// enumerated jointly (windows_over_base), in chunks in parallel; each chunk keeps its first
-// pattern per signature, in order, and the chunks are merged in order, so the witnesses and
-// their order are those of the serial enumeration.
+// Every distinct window of a type with one witness pattern each (compositional_products.hpp).
 std::vector<std::uint64_t> distinct_windows(const WindowType& t, const TransitionRule& rule, int& shared_count) {
     Outcomes outcomes;
-    std::array<std::vector<int>, kLeaves> tables;
-    for (int n = 0; n < kLeaves; ++n) tables[static_cast<std::size_t>(n)] = outcome_table(t, n, rule, outcomes);
-    const ReadSplit split = split_reads(t);
-    shared_count = static_cast<int>(split.shared.size());
-    const std::uint64_t bases = std::uint64_t{1} << split.shared.size();
-    constexpr std::uint64_t kChunk = 4096;
-    using Firsts = std::vector<std::pair<Signature, std::uint64_t>>;
-    std::vector<Firsts> chunks(static_cast<std::size_t>((bases + kChunk - 1) / kChunk));
-    const LeafGather leaf_gather(t);
-    tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
-        std::unordered_set<Signature, SignatureHash> seen;
-        Choices choices;
-        for (std::uint64_t s = c * kChunk; s < std::min(bases, (c + 1) * kChunk); ++s) {
-            std::uint64_t base = 0;
-            for (std::size_t j = 0; j < split.shared.size(); ++j)
-                if ((s >> j) & 1U) base |= std::uint64_t{1} << split.shared[j];
-            windows_over_base(split, tables, leaf_gather, base, choices, [&](const Signature& sig, std::uint64_t pattern) {
-                if (seen.insert(sig).second) chunks[c].emplace_back(sig, pattern);
-            });
-        }
-    });
-    std::unordered_set<Signature, SignatureHash> seen;
-    std::vector<std::uint64_t> witnesses;
-    for (const Firsts& chunk : chunks)
-        for (const auto& [sig, pattern] : chunk)
-            if (seen.insert(sig).second) witnesses.push_back(pattern);
-    return witnesses;
+    std::vector<LeafOutcomes> leaves(kLeaves);
+    for (int n = 0; n < kLeaves; ++n) {
+        leaves[static_cast<std::size_t>(n)].depends = t.read_index[static_cast<std::size_t>(n)];
+        leaves[static_cast<std::size_t>(n)].table = outcome_table(t, n, rule, outcomes);
+    }
+    return distinct_outcome_tuples(leaves, t.reads.size(), shared_count);
 }
 
 ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,

@@ -12,6 +12,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "compositional_products.hpp"
 #include "compositional_windows.hpp"
 #include "dualhex/install/element_templates.hpp"
 
@@ -37,6 +38,7 @@ struct BoundaryType {
     std::vector<Index3> vars;
     std::vector<std::vector<int>> depends;  // per leaf: indices into vars, sorted
     std::vector<int> own;                   // per leaf: its own octant's index
+    compositional_detail::OctantIndex var_of;  // vars' indices by octant
 };
 
 struct Status {  // the status function a pattern (bit i: vars[i] fine) gives the rule
@@ -44,8 +46,8 @@ struct Status {  // the status function a pattern (bit i: vars[i] fine) gives th
     const OutsidePolicy& policy;
     std::uint64_t pattern;
     bool var(const Index3& o) const {
-        const auto it = std::find(t.vars.begin(), t.vars.end(), o);
-        return it != t.vars.end() && ((pattern >> (it - t.vars.begin())) & 1U);  // unread: cannot matter
+        const int i = t.var_of(o);
+        return i >= 0 && ((pattern >> i) & 1U);  // unread: cannot matter
     }
     const LatticePoint& reader;
     bool operator()(const Index3& o) const {
@@ -63,7 +65,7 @@ Index3 octant_of(const LatticePoint& leaf) {
 
 BoundaryType boundary_type(const std::array<int, 3>& parity, const RootSides& sides, const TransitionRule& rule,
                            const OutsidePolicy& policy) {
-    BoundaryType t{parity, sides, {}, {}, {}, {}};
+    BoundaryType t{parity, sides, {}, {}, {}, {}, {}};
     const auto intern = [&](const Index3& o, bool free_outside) {
         if (!free_outside && !inside(o, sides)) throw std::logic_error("root policy: an outside cube copies an outside cube");
         const auto it = std::find(t.vars.begin(), t.vars.end(), o);
@@ -96,6 +98,7 @@ BoundaryType boundary_type(const std::array<int, 3>& parity, const RootSides& si
         t.depends.push_back(std::move(mine));
     }
     if (t.vars.size() > 63) throw std::length_error("root boundary: more than 63 octants read by one window");
+    t.var_of = compositional_detail::OctantIndex(t.vars);
     return t;
 }
 
@@ -111,56 +114,24 @@ std::string outcome(const BoundaryType& t, std::size_t n, std::uint64_t pattern,
     }
 }
 
-std::uint64_t scatter(std::uint64_t a, const std::vector<int>& indices) {
-    std::uint64_t pattern = 0;
-    for (std::size_t j = 0; j < indices.size(); ++j)
-        if ((a >> j) & 1U) pattern |= std::uint64_t{1} << indices[j];
-    return pattern;
-}
-
-// Every distinct window (distinct outcomes of the inside leaves), one witness pattern each:
-// the cubes several leaves depend on are enumerated jointly, each leaf's private ones per
-// leaf (they change only that leaf's outcome: the windows are the products of the choices).
+// Every distinct window (distinct outcomes of the inside leaves), one witness pattern each
+// (compositional_products.hpp): each leaf's outcome tabulated over the cubes it depends on.
 std::vector<std::uint64_t> distinct_windows(const BoundaryType& t, const TransitionRule& rule, const OutsidePolicy& policy) {
-    std::vector<int> readers(t.vars.size(), 0);
-    for (const auto& d : t.depends)
-        for (int i : d) ++readers[static_cast<std::size_t>(i)];
-    std::vector<int> shared;
-    for (std::size_t i = 0; i < t.vars.size(); ++i)
-        if (readers[i] > 1) shared.push_back(static_cast<int>(i));
-    std::vector<std::vector<int>> priv(t.leaves.size());
-    for (std::size_t n = 0; n < t.leaves.size(); ++n)
-        for (int i : t.depends[n])
-            if (readers[static_cast<std::size_t>(i)] == 1) priv[n].push_back(i);
-    std::map<std::vector<std::string>, std::uint64_t> seen;
-    std::vector<std::uint64_t> witnesses;
-    for (std::uint64_t s = 0; s < (std::uint64_t{1} << shared.size()); ++s) {
-        const std::uint64_t base = scatter(s, shared);
-        std::vector<std::vector<std::pair<std::string, std::uint64_t>>> choices(t.leaves.size());
-        for (std::size_t n = 0; n < t.leaves.size(); ++n)
-            for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv[n].size()); ++q) {
-                const std::uint64_t extra = scatter(q, priv[n]);
-                std::string o = outcome(t, n, base | extra, rule, policy);
-                auto& mine = choices[n];
-                if (std::none_of(mine.begin(), mine.end(), [&](const auto& c) { return c.first == o; }))
-                    mine.emplace_back(std::move(o), extra);
-            }
-        std::vector<std::size_t> at(t.leaves.size(), 0);  // odometer over the product
-        for (bool more = true; more;) {
-            std::vector<std::string> sig;
-            std::uint64_t pattern = base;
-            for (std::size_t n = 0; n < t.leaves.size(); ++n) {
-                sig.push_back(choices[n][at[n]].first);
-                pattern |= choices[n][at[n]].second;
-            }
-            if (seen.emplace(std::move(sig), pattern).second) witnesses.push_back(pattern);
-            more = false;
-            for (std::size_t n = 0; n < t.leaves.size() && !more; ++n)
-                if (++at[n] < choices[n].size()) more = true;
-                else at[n] = 0;
+    std::map<std::string, int> ids;
+    std::vector<compositional_detail::LeafOutcomes> leaves(t.leaves.size());
+    for (std::size_t n = 0; n < t.leaves.size(); ++n) {
+        leaves[n].depends = t.depends[n];
+        leaves[n].table.resize(std::size_t{1} << t.depends[n].size());
+        for (std::uint64_t a = 0; a < leaves[n].table.size(); ++a) {
+            std::uint64_t pattern = 0;
+            for (std::size_t j = 0; j < t.depends[n].size(); ++j)
+                if ((a >> j) & 1U) pattern |= std::uint64_t{1} << t.depends[n][j];
+            const std::string o = outcome(t, n, pattern, rule, policy);
+            leaves[n].table[a] = ids.emplace(o, static_cast<int>(ids.size())).first->second;
         }
     }
-    return witnesses;
+    int shared = 0;
+    return compositional_detail::distinct_outcome_tuples(leaves, t.vars.size(), shared);
 }
 
 // The inside leaves of B(g) for one pattern, translated so that g is the origin.

@@ -15,6 +15,29 @@ namespace dualhex::compositional_detail {
 using detail::Index3;
 constexpr int kLeaves = 8;  // the 2x2x2 leaves of B(g)
 
+/// The indices of a list of octants (each at most once) by octant: a dense table over the
+/// box they span (the rule asks for octants millions of times; a linear search of the list
+/// was a quarter of the compositional run). -1 for an octant not in the list.
+class OctantIndex {
+public:
+    OctantIndex() = default;
+    explicit OctantIndex(const std::vector<Index3>& octants);
+    [[nodiscard]] int operator()(const Index3& o) const {
+        std::size_t at = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const std::int64_t d = o[a] - min_[a];
+            if (d < 0 || d >= kBox) return -1;
+            at = at * kBox + static_cast<std::size_t>(d);
+        }
+        return slot_[at];
+    }
+
+private:
+    static constexpr std::int64_t kBox = 8;  // the octants of one window lie within 8 per axis
+    Index3 min_{};
+    std::vector<std::int8_t> slot_ = std::vector<std::int8_t>(kBox * kBox * kBox, -1);
+};
+
 // One parity type: the 8 leaves of B(g), g = parity, and the octants they read.
 struct WindowType {
     std::array<int, 3> parity{};
@@ -22,21 +45,7 @@ struct WindowType {
     std::vector<Index3> reads;                 // R(t)
     std::array<std::vector<int>, kLeaves> read_index;  // per leaf: indices into reads
     std::array<int, kLeaves> own{};            // per leaf: its own octant's index
-    /// The index in reads of octant o, or -1 if no leaf reads it. A dense table over the
-    /// box of the reads: the rule asks for octants millions of times (a linear search of
-    /// reads was a quarter of the run).
-    [[nodiscard]] int read_of(const Index3& o) const {
-        std::size_t at = 0;
-        for (std::size_t a = 0; a < 3; ++a) {
-            const std::int64_t d = o[a] - read_box_min[a];
-            if (d < 0 || d >= kReadBox) return -1;
-            at = at * kReadBox + static_cast<std::size_t>(d);
-        }
-        return read_slot[at];
-    }
-    static constexpr std::int64_t kReadBox = 8;  // octants read lie within 8 of each other per axis
-    Index3 read_box_min{};
-    std::vector<std::int8_t> read_slot;  // kReadBox^3 entries, filled by window_type
+    OctantIndex read_of;                       // reads' indices by octant
 };
 
 [[nodiscard]] std::vector<int> reach_bits(const TransitionRule& rule);
