@@ -14,6 +14,8 @@
 
 #include "compositional_products.hpp"
 #include "compositional_windows.hpp"
+#include "oriented_form.hpp"
+#include "window_classes.hpp"
 #include "dualhex/install/element_templates.hpp"
 
 namespace dualhex {
@@ -198,6 +200,128 @@ struct Outcome {
     std::string why;
 };
 
+// The full check of one built half window: every vertex on its root planes.
+Outcome check_half_window(const CellComplex& cx, std::int64_t unit, const RootSides& sides) {
+    Outcome o;
+    const BoundaryVertexReport r = check_boundary_vertices(cx, unit, sides);
+    o.ok = r.ok() && r.checked > 0;
+    o.checked = r.checked;
+    o.why = r.ok() ? (r.checked ? "" : "no vertex on the root planes") : r.failures.front();
+    for (const LatticePoint& p : cx.positions()) {  // per kind, for the report
+        if (!on_checked_planes(p, unit, sides)) continue;
+        int k = 0;
+        for (int a = 0; a < 3; ++a) k += sides[static_cast<std::size_t>(a)] != 0 && p[a] == 0 ? 1 : 0;
+        ++o.per_kind[static_cast<std::size_t>(k - 1)];
+    }
+    return o;
+}
+
+struct HalfWindow {
+    const BoundaryType* type = nullptr;
+    std::uint64_t pattern = 0;
+};
+
+struct Context {
+    const TransitionRule& rule;
+    const OutsidePolicy& policy;
+    tbb::enumerable_thread_specific<detail::TemplateCache>& caches;
+};
+
+// Builds and fully checks one half window, keeping its complex in kept if given.
+Outcome full_check(const HalfWindow& w, const Context& ctx, CellComplex* kept = nullptr) {
+    detail::TemplateCache& cache = ctx.caches.local();
+    try {
+        CellComplex cx = build_half_window(*w.type, w.pattern, ctx.rule, ctx.policy, cache);
+        Outcome o = check_half_window(cx, cache.unit(), w.type->sides);
+        if (kept) *kept = std::move(cx);
+        return o;
+    } catch (const std::exception& e) {
+        Outcome o;
+        o.why = std::string("not built: ") + e.what();
+        return o;
+    }
+}
+
+// The inside coarse leaves of a half window with what the rule places there (the class
+// key's input; throws what the rule throws).
+std::vector<PlacedLeaf> coarse_placements(const HalfWindow& w, const Context& ctx) {
+    const BoundaryType& t = *w.type;
+    std::vector<PlacedLeaf> out;
+    for (std::size_t n = 0; n < t.leaves.size(); ++n) {
+        if ((w.pattern >> t.own[n]) & 1U) continue;
+        PlacedLeaf placed{t.leaves[n], detail::coarse_leaf_context(t.leaves[n], Status{t, ctx.policy, w.pattern, t.leaves[n]}), std::nullopt};
+        placed.placement = ctx.rule.place(placed.context);
+        out.push_back(std::move(placed));
+    }
+    return out;
+}
+
+detail::OrientedForm half_form(const CellComplex& k, const CubeSymmetry& s) {
+    return detail::oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
+}
+
+// Every half window's outcome, class by class: windows whose sides and inside placements
+// are images of each other under a symmetry about g (window_classes.hpp) form a class; its
+// first window gets the full check, every other one is built and proved, point by point and
+// oriented face by oriented face (oriented_form.hpp), to be the exact image s_m^-1 s_r of the
+// representative's complex, s_r and s_m being the symmetries that take representative and
+// member to the class key. The check is invariant under a symmetry about g that maps the
+// root sides to the root sides (it reads positions only through the root planes x_a = 0 of
+// the root axes and the half-open box the sides cut out of [-U, U]^3, both mapped onto
+// their images; cells' outward orientation is kept, and the vertex counts per kind are
+// those of the images), so the member's outcome is its representative's. A member that is
+// not such an image, or whose representative fails, gets the full check itself: the
+// coverage is that of checking every window.
+std::vector<Outcome> check_by_class(const std::vector<HalfWindow>& windows, const ElementLibrary& library, const Context& ctx) {
+    const detail::PlacementCodes codes(library);
+    struct Keyed {
+        bool keyed = false;  // false: the rule threw (the full check reports it)
+        detail::BoundaryWindowKey key{};
+        CubeSymmetry s;
+    };
+    std::vector<Keyed> keys(windows.size());
+    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t i) {
+        try {
+            const BoundaryType& t = *windows[i].type;
+            auto [key, s] = detail::boundary_class_key(t.parity, t.sides, coarse_placements(windows[i], ctx), codes);
+            keys[i] = {true, std::move(key), s};
+        } catch (const std::exception&) {
+        }
+    });
+    std::map<detail::BoundaryWindowKey, std::size_t> class_of;  // classes in window order
+    std::vector<std::size_t> representative, class_index(windows.size(), 0);
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+        if (!keys[i].keyed) continue;
+        const auto [it, fresh] = class_of.emplace(keys[i].key, representative.size());
+        if (fresh) representative.push_back(i);
+        class_index[i] = it->second;
+    }
+    std::vector<Outcome> out(windows.size());
+    std::vector<detail::OrientedForm> forms(representative.size());
+    tbb::parallel_for(std::size_t{0}, representative.size(), [&](std::size_t c) {
+        const std::size_t i = representative[c];
+        CellComplex cx;
+        out[i] = full_check(windows[i], ctx, &cx);
+        if (out[i].ok) forms[c] = half_form(cx, keys[i].s);  // empty: members get full checks
+    });
+    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t i) {
+        if (!keys[i].keyed) return void(out[i] = full_check(windows[i], ctx));
+        const std::size_t rep = representative[class_index[i]];
+        if (rep == i) return;
+        const detail::OrientedForm& form = forms[class_index[i]];
+        if (!out[rep].ok || form.empty()) return void(out[i] = full_check(windows[i], ctx));
+        detail::TemplateCache& cache = ctx.caches.local();
+        CellComplex cx;
+        try {
+            cx = build_half_window(*windows[i].type, windows[i].pattern, ctx.rule, ctx.policy, cache);
+        } catch (const std::exception&) {
+            return void(out[i] = full_check(windows[i], ctx));
+        }
+        out[i] = half_form(cx, keys[i].s) == form ? out[rep] : check_half_window(cx, cache.unit(), windows[i].type->sides);
+    });
+    return out;
+}
+
 }  // namespace
 
 OutsidePolicy outside_policy(BoundaryPolicy policy) {
@@ -230,33 +354,17 @@ BoundaryResult run_compositional_boundary(const TransitionRule& rule, const Elem
         types[i] = boundary_type(kinds[i].first, kinds[i].second, rule, policy);
         patterns[i] = distinct_windows(types[i], rule, policy);
     });
-    std::vector<std::pair<std::size_t, std::uint64_t>> windows;
+    std::vector<HalfWindow> windows;
     for (std::size_t i = 0; i < types.size(); ++i)
-        for (std::uint64_t p : patterns[i]) windows.emplace_back(i, p);
+        for (std::uint64_t p : patterns[i]) windows.push_back({&types[i], p});
     tbb::enumerable_thread_specific<detail::TemplateCache> caches([&] { return detail::TemplateCache(library); });
+    const Context ctx{rule, policy, caches};
     std::vector<Outcome> outcomes(windows.size());
     std::vector<CellComplex> kept(options.on_window ? windows.size() : 0);  // for the observer
-    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t w) {
-        detail::TemplateCache& cache = caches.local();
-        const BoundaryType& t = types[windows[w].first];
-        Outcome& o = outcomes[w];
-        try {
-            CellComplex cx = build_half_window(t, windows[w].second, rule, policy, cache);
-            const BoundaryVertexReport r = check_boundary_vertices(cx, cache.unit(), t.sides);
-            o.ok = r.ok() && r.checked > 0;
-            o.checked = r.checked;
-            o.why = r.ok() ? (r.checked ? "" : "no vertex on the root planes") : r.failures.front();
-            for (const LatticePoint& p : cx.positions()) {  // per kind, for the report
-                if (!on_checked_planes(p, cache.unit(), t.sides)) continue;
-                int k = 0;
-                for (int a = 0; a < 3; ++a) k += t.sides[static_cast<std::size_t>(a)] != 0 && p[a] == 0 ? 1 : 0;
-                ++o.per_kind[static_cast<std::size_t>(k - 1)];
-            }
-            if (options.on_window) kept[w] = std::move(cx);
-        } catch (const std::exception& e) {
-            o.why = std::string("not built: ") + e.what();
-        }
-    });
+    if (options.on_window)  // every window checked and kept
+        tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t w) { outcomes[w] = full_check(windows[w], ctx, &kept[w]); });
+    else
+        outcomes = check_by_class(windows, library, ctx);
     for (std::size_t i = 0, w = 0; i < types.size(); ++i) {
         BoundaryTypeResult tr{types[i].parity, types[i].sides, 0, static_cast<int>(types[i].leaves.size()),
                               static_cast<int>(types[i].vars.size()), 0, 0, 0};

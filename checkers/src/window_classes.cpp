@@ -95,4 +95,20 @@ std::pair<WindowKey, CubeSymmetry> window_class_key(const std::array<int, 3>& pa
     return {best, best_s};
 }
 
+std::pair<BoundaryWindowKey, CubeSymmetry> boundary_class_key(const std::array<int, 3>& parity,
+                                                            const std::array<int, 3>& sides,
+                                                            const std::vector<PlacedLeaf>& coarse,
+                                                            const PlacementCodes& codes) {
+    const std::vector<KeyedLeaf> leaves = keyed_leaves(parity, coarse, codes);
+    BoundaryWindowKey best{};
+    CubeSymmetry best_s;
+    for (int i = 0; i < CubeSymmetry::kOrder; ++i) {
+        const CubeSymmetry s = CubeSymmetry::from_index(i);
+        const LatticePoint side = s.apply({sides[0], sides[1], sides[2]});
+        BoundaryWindowKey k{{side.x, side.y, side.z}, image_key(leaves, s, i, codes)};
+        if (i == 0 || k < best) best = std::move(k), best_s = s;
+    }
+    return {best, best_s};
+}
+
 }  // namespace dualhex::detail

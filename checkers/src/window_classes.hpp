@@ -53,4 +53,13 @@ private:
                                                                   const std::vector<PlacedLeaf>& coarse,
                                                                   const PlacementCodes& codes);
 
+/// A root-boundary half window's key: the image of its root sides (a vector, +-1 on each
+/// root axis) and of its inside coarse leaves (positions outside the root hold kFine, as
+/// fine ones do; the sides tell them apart).
+using BoundaryWindowKey = std::pair<std::array<std::int64_t, 3>, WindowKey>;
+[[nodiscard]] std::pair<BoundaryWindowKey, CubeSymmetry> boundary_class_key(const std::array<int, 3>& parity,
+                                                                            const std::array<int, 3>& sides,
+                                                                            const std::vector<PlacedLeaf>& coarse,
+                                                                            const PlacementCodes& codes);
+
 }  // namespace dualhex::detail
