@@ -14,6 +14,7 @@
 
 #include "compositional_products.hpp"
 #include "compositional_windows.hpp"
+#include "class_check.hpp"
 #include "oriented_form.hpp"
 #include "window_classes.hpp"
 #include "dualhex/install/element_templates.hpp"
@@ -260,66 +261,28 @@ detail::OrientedForm half_form(const CellComplex& k, const CubeSymmetry& s) {
     return detail::oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
 }
 
-// Every half window's outcome, class by class: windows whose sides and inside placements
-// are images of each other under a symmetry about g (window_classes.hpp) form a class; its
-// first window gets the full check, every other one is built and proved, point by point and
-// oriented face by oriented face (oriented_form.hpp), to be the exact image s_m^-1 s_r of the
-// representative's complex, s_r and s_m being the symmetries that take representative and
-// member to the class key. The check is invariant under a symmetry about g that maps the
-// root sides to the root sides (it reads positions only through the root planes x_a = 0 of
-// the root axes and the half-open box the sides cut out of [-U, U]^3, both mapped onto
-// their images; cells' outward orientation is kept, and the vertex counts per kind are
-// those of the images), so the member's outcome is its representative's. A member that is
-// not such an image, or whose representative fails, gets the full check itself: the
-// coverage is that of checking every window.
+// Every half window's outcome, class by class (class_check.hpp): windows whose root sides
+// and inside placements are images under a symmetry about g share a class. The check is
+// invariant under a symmetry about g that maps the root sides to the root sides: it reads
+// positions only through the root planes x_a = 0 of the root axes and the half-open box the
+// sides cut out of [-U, U]^3, both mapped onto their images; cells' outward orientation is
+// kept, and the vertex counts per kind are those of the images.
 std::vector<Outcome> check_by_class(const std::vector<HalfWindow>& windows, const ElementLibrary& library, const Context& ctx) {
     const detail::PlacementCodes codes(library);
-    struct Keyed {
-        bool keyed = false;  // false: the rule threw (the full check reports it)
-        detail::BoundaryWindowKey key{};
-        CubeSymmetry s;
-    };
-    std::vector<Keyed> keys(windows.size());
-    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t i) {
-        try {
-            const BoundaryType& t = *windows[i].type;
-            auto [key, s] = detail::boundary_class_key(t.parity, t.sides, coarse_placements(windows[i], ctx), codes);
-            keys[i] = {true, std::move(key), s};
-        } catch (const std::exception&) {
-        }
-    });
-    std::map<detail::BoundaryWindowKey, std::size_t> class_of;  // classes in window order
-    std::vector<std::size_t> representative, class_index(windows.size(), 0);
-    for (std::size_t i = 0; i < windows.size(); ++i) {
-        if (!keys[i].keyed) continue;
-        const auto [it, fresh] = class_of.emplace(keys[i].key, representative.size());
-        if (fresh) representative.push_back(i);
-        class_index[i] = it->second;
-    }
-    std::vector<Outcome> out(windows.size());
-    std::vector<detail::OrientedForm> forms(representative.size());
-    tbb::parallel_for(std::size_t{0}, representative.size(), [&](std::size_t c) {
-        const std::size_t i = representative[c];
-        CellComplex cx;
-        out[i] = full_check(windows[i], ctx, &cx);
-        if (out[i].ok) forms[c] = half_form(cx, keys[i].s);  // empty: members get full checks
-    });
-    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t i) {
-        if (!keys[i].keyed) return void(out[i] = full_check(windows[i], ctx));
-        const std::size_t rep = representative[class_index[i]];
-        if (rep == i) return;
-        const detail::OrientedForm& form = forms[class_index[i]];
-        if (!out[rep].ok || form.empty()) return void(out[i] = full_check(windows[i], ctx));
-        detail::TemplateCache& cache = ctx.caches.local();
-        CellComplex cx;
-        try {
-            cx = build_half_window(*windows[i].type, windows[i].pattern, ctx.rule, ctx.policy, cache);
-        } catch (const std::exception&) {
-            return void(out[i] = full_check(windows[i], ctx));
-        }
-        out[i] = half_form(cx, keys[i].s) == form ? out[rep] : check_half_window(cx, cache.unit(), windows[i].type->sides);
-    });
-    return out;
+    return detail::check_by_class<detail::BoundaryWindowKey, CellComplex, Outcome>(
+        windows.size(),
+        [&](std::size_t i) -> std::optional<std::pair<detail::BoundaryWindowKey, CubeSymmetry>> {
+            try {
+                const BoundaryType& t = *windows[i].type;
+                return detail::boundary_class_key(t.parity, t.sides, coarse_placements(windows[i], ctx), codes);
+            } catch (const std::exception&) {
+                return std::nullopt;  // the rule threw: the full check reports it
+            }
+        },
+        [&](std::size_t i, CellComplex* keep) { return full_check(windows[i], ctx, keep); },
+        [&](std::size_t i) { return build_half_window(*windows[i].type, windows[i].pattern, ctx.rule, ctx.policy, ctx.caches.local()); },
+        [&](std::size_t i, const CellComplex& cx) { return check_half_window(cx, ctx.caches.local().unit(), windows[i].type->sides); },
+        half_form, [](const Outcome& o) { return o.ok; });
 }
 
 }  // namespace
