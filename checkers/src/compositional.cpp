@@ -51,17 +51,21 @@ Index3 octant_of(const LatticePoint& leaf) {
 
 OctantIndex::OctantIndex(const std::vector<Index3>& octants) {
     if (octants.size() > 127) throw std::length_error("octant index: more than 127 octants");
-    for (std::size_t a = 0; a < 3 && !octants.empty(); ++a) {
-        min_[a] = octants.front()[a];
-        for (const Index3& o : octants) min_[a] = std::min(min_[a], o[a]);
+    if (octants.empty()) return;
+    std::size_t cells = 1;
+    for (std::size_t a = 0; a < 3; ++a) {
+        std::int64_t hi = octants.front()[a];
+        min_[a] = hi;
+        for (const Index3& o : octants) min_[a] = std::min(min_[a], o[a]), hi = std::max(hi, o[a]);
+        extent_[a] = hi - min_[a] + 1;
+        if (extent_[a] > 64) throw std::length_error("octant index: the octants span more than 64 per axis");
+        cells *= static_cast<std::size_t>(extent_[a]);
     }
+    slot_.assign(cells, -1);
     for (std::size_t i = 0; i < octants.size(); ++i) {
         std::size_t at = 0;
-        for (std::size_t a = 0; a < 3; ++a) {
-            const std::int64_t d = octants[i][a] - min_[a];
-            if (d >= kBox) throw std::length_error("octant index: the octants span more than 8 per axis");
-            at = at * kBox + static_cast<std::size_t>(d);
-        }
+        for (std::size_t a = 0; a < 3; ++a)
+            at = at * static_cast<std::size_t>(extent_[a]) + static_cast<std::size_t>(octants[i][a] - min_[a]);
         slot_[at] = static_cast<std::int8_t>(i);
     }
 }

@@ -15,9 +15,9 @@ namespace dualhex::compositional_detail {
 using detail::Index3;
 constexpr int kLeaves = 8;  // the 2x2x2 leaves of B(g)
 
-/// The indices of a list of octants (each at most once) by octant: a dense table over the
-/// box they span (the rule asks for octants millions of times; a linear search of the list
-/// was a quarter of the compositional run). -1 for an octant not in the list.
+/// The indices of a list of at most 127 octants (each at most once) by octant: a dense
+/// table over the box they span (the rule asks for octants millions of times; a linear
+/// search of the list was a quarter of the compositional run). -1 for an octant not in it.
 class OctantIndex {
 public:
     OctantIndex() = default;
@@ -26,16 +26,15 @@ public:
         std::size_t at = 0;
         for (std::size_t a = 0; a < 3; ++a) {
             const std::int64_t d = o[a] - min_[a];
-            if (d < 0 || d >= kBox) return -1;
-            at = at * kBox + static_cast<std::size_t>(d);
+            if (d < 0 || d >= extent_[a]) return -1;
+            at = at * static_cast<std::size_t>(extent_[a]) + static_cast<std::size_t>(d);
         }
         return slot_[at];
     }
 
 private:
-    static constexpr std::int64_t kBox = 8;  // the octants of one window lie within 8 per axis
-    Index3 min_{};
-    std::vector<std::int8_t> slot_ = std::vector<std::int8_t>(kBox * kBox * kBox, -1);
+    Index3 min_{}, extent_{};  // the box the octants span (extent 0: empty)
+    std::vector<std::int8_t> slot_;
 };
 
 // One parity type: the 8 leaves of B(g), g = parity, and the octants they read.
