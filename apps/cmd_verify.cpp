@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <memory>
 
+#include <sys/resource.h>
+
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "dualhex/checkers/certificate.hpp"
@@ -28,6 +30,15 @@ struct VerifyOptions {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// CPU time (user + system) of the whole process, every thread: the checks run one after the
+// other, so the difference across one check is that check's CPU however many threads it used.
+double process_cpu_seconds() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    const auto sec = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+    return sec(u.ru_utime) + sec(u.ru_stime);
 }
 
 bool selected(const std::string& name, const std::vector<std::string>& only) {
@@ -58,6 +69,7 @@ void run_verify(const VerifyOptions& opt) {
 
     if (!opt.certify.empty()) check_output_directory(opt.certify, opt.force);  // as dualhex certify
     const auto t_all = std::chrono::steady_clock::now();
+    const double cpu_all = process_cpu_seconds();
     // The bar counts the checks run of those selected; the table rows print over it.
     ProgressBar bar = ProgressBar::for_stderr(opt.json, opt.no_progress);
     const auto n_selected = static_cast<std::size_t>(std::count_if(
@@ -71,6 +83,7 @@ void run_verify(const VerifyOptions& opt) {
         if (!selected(c.name, opt.only)) continue;
         bar.update(c.name, n_run++, n_selected);
         const auto t0 = std::chrono::steady_clock::now();
+        const double cpu0 = process_cpu_seconds();
         CheckOutcome out;
         try {
             out = c.run();
@@ -79,6 +92,7 @@ void run_verify(const VerifyOptions& opt) {
             out.summary = std::string("exception: ") + e.what();
         }
         const double dt = seconds_since(t0);
+        const double cpu = process_cpu_seconds() - cpu0;
         for (const char* block : {"strong", "weak"}) {
             if (!out.details.is_object()) break;
             if (c.name == std::string("schemes.") + block + "-exhaustive")
@@ -101,15 +115,18 @@ void run_verify(const VerifyOptions& opt) {
                           {"ok", out.status != CheckStatus::kFail},
                           {"summary", out.summary},
                           {"seconds", dt},
+                          {"cpu_seconds", cpu},
                           {"details", out.details}});
         if (!opt.json) {
             bar.clear();
-            std::printf("%-4s  %-28s %8.3f s  %s\n", to_string(out.status), c.name.c_str(), dt, out.summary.c_str());
+            std::printf("%-4s  %-28s %7.3f s %7.3f s CPU  %s\n", to_string(out.status), c.name.c_str(), dt, cpu,
+                        out.summary.c_str());
             if (!out.report.empty()) std::fputs(out.report.c_str(), stdout);
             std::fflush(stdout);
         }
     }
     const double total = seconds_since(t_all);
+    const double cpu_total = process_cpu_seconds() - cpu_all;
     bar.clear();
     const bool ok = failed == 0;
     if (opt.json) {
@@ -118,12 +135,13 @@ void run_verify(const VerifyOptions& opt) {
                     {"failed", failed},
                     {"skipped", skipped},
                     {"seconds", total},
+                    {"cpu_seconds", cpu_total},
                     {"strong", blocks["strong"]},
                     {"weak", blocks["weak"]},
                     {"checks", checks}});
     } else {
-        std::printf("%s: %d passed, %d failed, %d skipped in %.3f s\n", ok ? "OK" : "FAILED", passed, failed, skipped,
-                    total);
+        std::printf("%s: %d passed, %d failed, %d skipped in %.3f s (%.3f s CPU)\n", ok ? "OK" : "FAILED", passed, failed,
+                    skipped, total, cpu_total);
     }
     if (!ok) throw Exit{kCheckFailed};
     if (!opt.certify.empty()) {

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "dualhex/install/element_templates.hpp"
+#include "compositional_products.hpp"
 #include "compositional_windows.hpp"
 
 namespace dualhex {
@@ -48,6 +49,27 @@ Index3 octant_of(const LatticePoint& leaf) {
     return {detail::floor_div(leaf.x, 2), detail::floor_div(leaf.y, 2), detail::floor_div(leaf.z, 2)};
 }
 
+OctantIndex::OctantIndex(const std::vector<Index3>& octants) {
+    if (octants.size() > 127) throw std::length_error("octant index: more than 127 octants");
+    if (octants.empty()) return;
+    std::size_t cells = 1;
+    for (std::size_t a = 0; a < 3; ++a) {
+        std::int64_t hi = octants.front()[a];
+        min_[a] = hi;
+        for (const Index3& o : octants) min_[a] = std::min(min_[a], o[a]), hi = std::max(hi, o[a]);
+        extent_[a] = hi - min_[a] + 1;
+        if (extent_[a] > 64) throw std::length_error("octant index: the octants span more than 64 per axis");
+        cells *= static_cast<std::size_t>(extent_[a]);
+    }
+    slot_.assign(cells, -1);
+    for (std::size_t i = 0; i < octants.size(); ++i) {
+        std::size_t at = 0;
+        for (std::size_t a = 0; a < 3; ++a)
+            at = at * static_cast<std::size_t>(extent_[a]) + static_cast<std::size_t>(octants[i][a] - min_[a]);
+        slot_[at] = static_cast<std::int8_t>(i);
+    }
+}
+
 WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& rule) {
     WindowType t;
     t.parity = parity;
@@ -69,6 +91,7 @@ WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& r
         mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
     }
     if (t.reads.size() > 63) throw std::length_error("compositional: more than 63 octants read by one window");
+    t.read_of = OctantIndex(t.reads);
     return t;
 }
 
@@ -82,9 +105,8 @@ private:
 };
 
 bool fine_in(const WindowType& t, std::uint64_t pattern, const Index3& o) {
-    for (std::size_t i = 0; i < t.reads.size(); ++i)
-        if (t.reads[i] == o) return (pattern >> i) & 1U;
-    return false;  // not read by the rule: its value cannot matter (reach)
+    const int i = t.read_of(o);
+    return i >= 0 && ((pattern >> i) & 1U);  // not read by the rule: its value cannot matter (reach)
 }
 
 // Per leaf: the outcome of each assignment of the leaf's own read octants (bit j: read_index[j]).
@@ -112,78 +134,15 @@ std::vector<int> outcome_table(const WindowType& t, int n, const TransitionRule&
     return table;
 }
 
-using Signature = std::array<int, kLeaves>;
-struct SignatureHash {
-    std::size_t operator()(const Signature& s) const {
-        std::size_t h = 1469598103934665603ULL;
-        for (int x : s) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ULL;
-        return h;
-    }
-};
-
-std::uint64_t gather(std::uint64_t pattern, const std::vector<int>& indices) {
-    std::uint64_t a = 0;
-    for (std::size_t j = 0; j < indices.size(); ++j) a |= ((pattern >> indices[j]) & 1U) << j;
-    return a;
-}
-
-// Every distinct window of a type with one witness pattern each: the shared octants are
-// enumerated jointly; for each leaf, its private octants (read by no other leaf) only
-// change its own outcome, so the window's outcomes are the product of per-leaf choices.
+// Every distinct window of a type with one witness pattern each (compositional_products.hpp).
 std::vector<std::uint64_t> distinct_windows(const WindowType& t, const TransitionRule& rule, int& shared_count) {
     Outcomes outcomes;
-    std::array<std::vector<int>, kLeaves> tables;
-    for (int n = 0; n < kLeaves; ++n) tables[static_cast<std::size_t>(n)] = outcome_table(t, n, rule, outcomes);
-    std::vector<int> readers(t.reads.size(), 0);
-    for (const auto& mine : t.read_index)
-        for (int i : mine) ++readers[static_cast<std::size_t>(i)];
-    std::vector<int> shared;
-    std::array<std::vector<int>, kLeaves> private_bits;
-    for (std::size_t i = 0; i < t.reads.size(); ++i)
-        if (readers[i] > 1) shared.push_back(static_cast<int>(i));
-    for (int n = 0; n < kLeaves; ++n)
-        for (int i : t.read_index[static_cast<std::size_t>(n)])
-            if (readers[static_cast<std::size_t>(i)] == 1) private_bits[static_cast<std::size_t>(n)].push_back(i);
-    shared_count = static_cast<int>(shared.size());
-
-    std::unordered_map<Signature, std::uint64_t, SignatureHash> seen;
-    std::vector<std::uint64_t> witnesses;
-    for (std::uint64_t s = 0; s < (std::uint64_t{1} << shared.size()); ++s) {
-        std::uint64_t base = 0;
-        for (std::size_t j = 0; j < shared.size(); ++j)
-            if ((s >> j) & 1U) base |= std::uint64_t{1} << shared[j];
-        // per leaf: its distinct outcomes over its private octants, with a witness each
-        std::array<std::vector<std::pair<int, std::uint64_t>>, kLeaves> choices;
-        for (int n = 0; n < kLeaves; ++n) {
-            const auto& priv = private_bits[static_cast<std::size_t>(n)];
-            auto& mine = choices[static_cast<std::size_t>(n)];
-            for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv.size()); ++q) {
-                std::uint64_t extra = 0;
-                for (std::size_t j = 0; j < priv.size(); ++j)
-                    if ((q >> j) & 1U) extra |= std::uint64_t{1} << priv[j];
-                const int o = tables[static_cast<std::size_t>(n)][gather(base | extra, t.read_index[static_cast<std::size_t>(n)])];
-                if (std::none_of(mine.begin(), mine.end(), [o](const auto& c) { return c.first == o; })) mine.emplace_back(o, extra);
-            }
-        }
-        std::array<std::size_t, kLeaves> at{};  // odometer over the product of the choices
-        for (bool more = true; more;) {
-            Signature sig{};
-            std::uint64_t pattern = base;
-            for (int n = 0; n < kLeaves; ++n) {
-                const auto& c = choices[static_cast<std::size_t>(n)][at[static_cast<std::size_t>(n)]];
-                sig[static_cast<std::size_t>(n)] = c.first;
-                pattern |= c.second;
-            }
-            if (seen.emplace(sig, pattern).second) witnesses.push_back(pattern);
-            more = false;
-            for (int n = 0; n < kLeaves && !more; ++n) {
-                auto& k = at[static_cast<std::size_t>(n)];
-                if (++k < choices[static_cast<std::size_t>(n)].size()) more = true;
-                else k = 0;
-            }
-        }
+    std::vector<LeafOutcomes> leaves(kLeaves);
+    for (int n = 0; n < kLeaves; ++n) {
+        leaves[static_cast<std::size_t>(n)].depends = t.read_index[static_cast<std::size_t>(n)];
+        leaves[static_cast<std::size_t>(n)].table = outcome_table(t, n, rule, outcomes);
     }
-    return witnesses;
+    return distinct_outcome_tuples(leaves, t.reads.size(), shared_count);
 }
 
 ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,

@@ -12,7 +12,11 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "compositional_products.hpp"
 #include "compositional_windows.hpp"
+#include "class_check.hpp"
+#include "oriented_form.hpp"
+#include "window_classes.hpp"
 #include "dualhex/install/element_templates.hpp"
 
 namespace dualhex {
@@ -37,6 +41,7 @@ struct BoundaryType {
     std::vector<Index3> vars;
     std::vector<std::vector<int>> depends;  // per leaf: indices into vars, sorted
     std::vector<int> own;                   // per leaf: its own octant's index
+    compositional_detail::OctantIndex var_of;  // vars' indices by octant
 };
 
 struct Status {  // the status function a pattern (bit i: vars[i] fine) gives the rule
@@ -44,8 +49,8 @@ struct Status {  // the status function a pattern (bit i: vars[i] fine) gives th
     const OutsidePolicy& policy;
     std::uint64_t pattern;
     bool var(const Index3& o) const {
-        const auto it = std::find(t.vars.begin(), t.vars.end(), o);
-        return it != t.vars.end() && ((pattern >> (it - t.vars.begin())) & 1U);  // unread: cannot matter
+        const int i = t.var_of(o);
+        return i >= 0 && ((pattern >> i) & 1U);  // unread: cannot matter
     }
     const LatticePoint& reader;
     bool operator()(const Index3& o) const {
@@ -63,7 +68,7 @@ Index3 octant_of(const LatticePoint& leaf) {
 
 BoundaryType boundary_type(const std::array<int, 3>& parity, const RootSides& sides, const TransitionRule& rule,
                            const OutsidePolicy& policy) {
-    BoundaryType t{parity, sides, {}, {}, {}, {}};
+    BoundaryType t{parity, sides, {}, {}, {}, {}, {}};
     const auto intern = [&](const Index3& o, bool free_outside) {
         if (!free_outside && !inside(o, sides)) throw std::logic_error("root policy: an outside cube copies an outside cube");
         const auto it = std::find(t.vars.begin(), t.vars.end(), o);
@@ -96,6 +101,7 @@ BoundaryType boundary_type(const std::array<int, 3>& parity, const RootSides& si
         t.depends.push_back(std::move(mine));
     }
     if (t.vars.size() > 63) throw std::length_error("root boundary: more than 63 octants read by one window");
+    t.var_of = compositional_detail::OctantIndex(t.vars);
     return t;
 }
 
@@ -111,56 +117,24 @@ std::string outcome(const BoundaryType& t, std::size_t n, std::uint64_t pattern,
     }
 }
 
-std::uint64_t scatter(std::uint64_t a, const std::vector<int>& indices) {
-    std::uint64_t pattern = 0;
-    for (std::size_t j = 0; j < indices.size(); ++j)
-        if ((a >> j) & 1U) pattern |= std::uint64_t{1} << indices[j];
-    return pattern;
-}
-
-// Every distinct window (distinct outcomes of the inside leaves), one witness pattern each:
-// the cubes several leaves depend on are enumerated jointly, each leaf's private ones per
-// leaf (they change only that leaf's outcome: the windows are the products of the choices).
+// Every distinct window (distinct outcomes of the inside leaves), one witness pattern each
+// (compositional_products.hpp): each leaf's outcome tabulated over the cubes it depends on.
 std::vector<std::uint64_t> distinct_windows(const BoundaryType& t, const TransitionRule& rule, const OutsidePolicy& policy) {
-    std::vector<int> readers(t.vars.size(), 0);
-    for (const auto& d : t.depends)
-        for (int i : d) ++readers[static_cast<std::size_t>(i)];
-    std::vector<int> shared;
-    for (std::size_t i = 0; i < t.vars.size(); ++i)
-        if (readers[i] > 1) shared.push_back(static_cast<int>(i));
-    std::vector<std::vector<int>> priv(t.leaves.size());
-    for (std::size_t n = 0; n < t.leaves.size(); ++n)
-        for (int i : t.depends[n])
-            if (readers[static_cast<std::size_t>(i)] == 1) priv[n].push_back(i);
-    std::map<std::vector<std::string>, std::uint64_t> seen;
-    std::vector<std::uint64_t> witnesses;
-    for (std::uint64_t s = 0; s < (std::uint64_t{1} << shared.size()); ++s) {
-        const std::uint64_t base = scatter(s, shared);
-        std::vector<std::vector<std::pair<std::string, std::uint64_t>>> choices(t.leaves.size());
-        for (std::size_t n = 0; n < t.leaves.size(); ++n)
-            for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv[n].size()); ++q) {
-                const std::uint64_t extra = scatter(q, priv[n]);
-                std::string o = outcome(t, n, base | extra, rule, policy);
-                auto& mine = choices[n];
-                if (std::none_of(mine.begin(), mine.end(), [&](const auto& c) { return c.first == o; }))
-                    mine.emplace_back(std::move(o), extra);
-            }
-        std::vector<std::size_t> at(t.leaves.size(), 0);  // odometer over the product
-        for (bool more = true; more;) {
-            std::vector<std::string> sig;
-            std::uint64_t pattern = base;
-            for (std::size_t n = 0; n < t.leaves.size(); ++n) {
-                sig.push_back(choices[n][at[n]].first);
-                pattern |= choices[n][at[n]].second;
-            }
-            if (seen.emplace(std::move(sig), pattern).second) witnesses.push_back(pattern);
-            more = false;
-            for (std::size_t n = 0; n < t.leaves.size() && !more; ++n)
-                if (++at[n] < choices[n].size()) more = true;
-                else at[n] = 0;
+    std::map<std::string, int> ids;
+    std::vector<compositional_detail::LeafOutcomes> leaves(t.leaves.size());
+    for (std::size_t n = 0; n < t.leaves.size(); ++n) {
+        leaves[n].depends = t.depends[n];
+        leaves[n].table.resize(std::size_t{1} << t.depends[n].size());
+        for (std::uint64_t a = 0; a < leaves[n].table.size(); ++a) {
+            std::uint64_t pattern = 0;
+            for (std::size_t j = 0; j < t.depends[n].size(); ++j)
+                if ((a >> j) & 1U) pattern |= std::uint64_t{1} << t.depends[n][j];
+            const std::string o = outcome(t, n, pattern, rule, policy);
+            leaves[n].table[a] = ids.emplace(o, static_cast<int>(ids.size())).first->second;
         }
     }
-    return witnesses;
+    int shared = 0;
+    return compositional_detail::distinct_outcome_tuples(leaves, t.vars.size(), shared);
 }
 
 // The inside leaves of B(g) for one pattern, translated so that g is the origin.
@@ -227,6 +201,90 @@ struct Outcome {
     std::string why;
 };
 
+// The full check of one built half window: every vertex on its root planes.
+Outcome check_half_window(const CellComplex& cx, std::int64_t unit, const RootSides& sides) {
+    Outcome o;
+    const BoundaryVertexReport r = check_boundary_vertices(cx, unit, sides);
+    o.ok = r.ok() && r.checked > 0;
+    o.checked = r.checked;
+    o.why = r.ok() ? (r.checked ? "" : "no vertex on the root planes") : r.failures.front();
+    for (const LatticePoint& p : cx.positions()) {  // per kind, for the report
+        if (!on_checked_planes(p, unit, sides)) continue;
+        int k = 0;
+        for (int a = 0; a < 3; ++a) k += sides[static_cast<std::size_t>(a)] != 0 && p[a] == 0 ? 1 : 0;
+        ++o.per_kind[static_cast<std::size_t>(k - 1)];
+    }
+    return o;
+}
+
+struct HalfWindow {
+    const BoundaryType* type = nullptr;
+    std::uint64_t pattern = 0;
+};
+
+struct Context {
+    const TransitionRule& rule;
+    const OutsidePolicy& policy;
+    tbb::enumerable_thread_specific<detail::TemplateCache>& caches;
+};
+
+// Builds and fully checks one half window, keeping its complex in kept if given.
+Outcome full_check(const HalfWindow& w, const Context& ctx, CellComplex* kept = nullptr) {
+    detail::TemplateCache& cache = ctx.caches.local();
+    try {
+        CellComplex cx = build_half_window(*w.type, w.pattern, ctx.rule, ctx.policy, cache);
+        Outcome o = check_half_window(cx, cache.unit(), w.type->sides);
+        if (kept) *kept = std::move(cx);
+        return o;
+    } catch (const std::exception& e) {
+        Outcome o;
+        o.why = std::string("not built: ") + e.what();
+        return o;
+    }
+}
+
+// The inside coarse leaves of a half window with what the rule places there (the class
+// key's input; throws what the rule throws).
+std::vector<PlacedLeaf> coarse_placements(const HalfWindow& w, const Context& ctx) {
+    const BoundaryType& t = *w.type;
+    std::vector<PlacedLeaf> out;
+    for (std::size_t n = 0; n < t.leaves.size(); ++n) {
+        if ((w.pattern >> t.own[n]) & 1U) continue;
+        PlacedLeaf placed{t.leaves[n], detail::coarse_leaf_context(t.leaves[n], Status{t, ctx.policy, w.pattern, t.leaves[n]}), std::nullopt};
+        placed.placement = ctx.rule.place(placed.context);
+        out.push_back(std::move(placed));
+    }
+    return out;
+}
+
+detail::OrientedForm half_form(const CellComplex& k, const CubeSymmetry& s) {
+    return detail::oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
+}
+
+// Every half window's outcome, class by class (class_check.hpp): windows whose root sides
+// and inside placements are images under a symmetry about g share a class. The check is
+// invariant under a symmetry about g that maps the root sides to the root sides: it reads
+// positions only through the root planes x_a = 0 of the root axes and the half-open box the
+// sides cut out of [-U, U]^3, both mapped onto their images; cells' outward orientation is
+// kept, and the vertex counts per kind are those of the images.
+std::vector<Outcome> check_by_class(const std::vector<HalfWindow>& windows, const ElementLibrary& library, const Context& ctx) {
+    const detail::PlacementCodes codes(library);
+    return detail::check_by_class<detail::BoundaryWindowKey, CellComplex, Outcome>(
+        windows.size(),
+        [&](std::size_t i) -> std::optional<std::pair<detail::BoundaryWindowKey, CubeSymmetry>> {
+            try {
+                const BoundaryType& t = *windows[i].type;
+                return detail::boundary_class_key(t.parity, t.sides, coarse_placements(windows[i], ctx), codes);
+            } catch (const std::exception&) {
+                return std::nullopt;  // the rule threw: the full check reports it
+            }
+        },
+        [&](std::size_t i, CellComplex* keep) { return full_check(windows[i], ctx, keep); },
+        [&](std::size_t i) { return build_half_window(*windows[i].type, windows[i].pattern, ctx.rule, ctx.policy, ctx.caches.local()); },
+        [&](std::size_t i, const CellComplex& cx) { return check_half_window(cx, ctx.caches.local().unit(), windows[i].type->sides); },
+        half_form, [](const Outcome& o) { return o.ok; });
+}
+
 }  // namespace
 
 OutsidePolicy outside_policy(BoundaryPolicy policy) {
@@ -259,33 +317,17 @@ BoundaryResult run_compositional_boundary(const TransitionRule& rule, const Elem
         types[i] = boundary_type(kinds[i].first, kinds[i].second, rule, policy);
         patterns[i] = distinct_windows(types[i], rule, policy);
     });
-    std::vector<std::pair<std::size_t, std::uint64_t>> windows;
+    std::vector<HalfWindow> windows;
     for (std::size_t i = 0; i < types.size(); ++i)
-        for (std::uint64_t p : patterns[i]) windows.emplace_back(i, p);
+        for (std::uint64_t p : patterns[i]) windows.push_back({&types[i], p});
     tbb::enumerable_thread_specific<detail::TemplateCache> caches([&] { return detail::TemplateCache(library); });
+    const Context ctx{rule, policy, caches};
     std::vector<Outcome> outcomes(windows.size());
     std::vector<CellComplex> kept(options.on_window ? windows.size() : 0);  // for the observer
-    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t w) {
-        detail::TemplateCache& cache = caches.local();
-        const BoundaryType& t = types[windows[w].first];
-        Outcome& o = outcomes[w];
-        try {
-            CellComplex cx = build_half_window(t, windows[w].second, rule, policy, cache);
-            const BoundaryVertexReport r = check_boundary_vertices(cx, cache.unit(), t.sides);
-            o.ok = r.ok() && r.checked > 0;
-            o.checked = r.checked;
-            o.why = r.ok() ? (r.checked ? "" : "no vertex on the root planes") : r.failures.front();
-            for (const LatticePoint& p : cx.positions()) {  // per kind, for the report
-                if (!on_checked_planes(p, cache.unit(), t.sides)) continue;
-                int k = 0;
-                for (int a = 0; a < 3; ++a) k += t.sides[static_cast<std::size_t>(a)] != 0 && p[a] == 0 ? 1 : 0;
-                ++o.per_kind[static_cast<std::size_t>(k - 1)];
-            }
-            if (options.on_window) kept[w] = std::move(cx);
-        } catch (const std::exception& e) {
-            o.why = std::string("not built: ") + e.what();
-        }
-    });
+    if (options.on_window)  // every window checked and kept
+        tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t w) { outcomes[w] = full_check(windows[w], ctx, &kept[w]); });
+    else
+        outcomes = check_by_class(windows, library, ctx);
     for (std::size_t i = 0, w = 0; i < types.size(); ++i) {
         BoundaryTypeResult tr{types[i].parity, types[i].sides, 0, static_cast<int>(types[i].leaves.size()),
                               static_cast<int>(types[i].vars.size()), 0, 0, 0};

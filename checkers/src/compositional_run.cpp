@@ -2,8 +2,8 @@
 // parity types, checked in parallel (oneTBB) and tallied in window order, so the result is
 // that of a serial run for any number of threads.
 //
-// Without an on_window observer the windows are checked class by class (window_classes.hpp):
-// one representative per congruence class gets the full check; every other window is built
+// Without an on_window observer the windows are checked class by class (class_check.hpp, keys
+// from window_classes.hpp): one representative per congruence class gets the full check; every other window is built
 // and proved to be the exact image of its representative under a cube symmetry about g
 // (oriented_form.hpp: its vertices and oriented cells, point by point). The check is
 // invariant under those symmetries (the window box and its interior are), so the member's
@@ -19,6 +19,7 @@
 #include <tbb/parallel_for.h>
 
 #include "compositional_windows.hpp"
+#include "class_check.hpp"
 #include "oriented_form.hpp"
 #include "window_check.hpp"
 #include "window_classes.hpp"
@@ -50,68 +51,39 @@ struct Window {
     std::uint64_t pattern = 0;
 };
 
-Outcome full_check(const Window& w, const TransitionRule& rule, detail::TemplateCache& cache) {
-    return outcome_of(detail::check_window(0, cache.unit(), [&] { return build_window(*w.type, w.pattern, rule, cache); }));
-}
-
-// Every window's outcome, class by class (see the top of the file).
+// Every window's outcome, class by class (class_check.hpp).
 std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const TransitionRule& rule,
                                     const ElementLibrary& library, Caches& caches, const Progress& progress) {
     const detail::PlacementCodes codes(library);
-    struct Keyed {
-        bool keyed = false;  // false: the rule threw (the full check reports it)
-        detail::WindowKey key{};
-        CubeSymmetry s;
+    // Work units: each window's key, each representative's full check or member's comparison.
+    ProgressCounter counter(progress, "windows", 2 * windows.size());
+    const auto build = [&](std::size_t i) { return build_window(*windows[i].type, windows[i].pattern, rule, caches.local()); };
+    const auto check_built = [&](std::size_t, ConfigurationComplex built) {
+        return outcome_of(detail::check_window(0, caches.local().unit(), [&] { return std::move(built); }));
     };
-    std::vector<Keyed> keys(windows.size());
-    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t i) {
-        const Window& w = windows[i];
-        try {
-            const auto [key, s] = detail::window_class_key(w.type->parity, coarse_placements(*w.type, w.pattern, rule), codes);
-            keys[i] = {true, key, s};
-        } catch (const std::exception&) {
-        }
-    });
-    // Classes in window order: the representative is the first window with the key.
-    std::map<detail::WindowKey, std::size_t> class_of;
-    std::vector<std::size_t> representative, class_index(windows.size(), 0);
-    for (std::size_t i = 0; i < windows.size(); ++i) {
-        if (!keys[i].keyed) continue;
-        const auto [it, fresh] = class_of.emplace(keys[i].key, representative.size());
-        if (fresh) representative.push_back(i);
-        class_index[i] = it->second;
-    }
-    std::vector<Outcome> out(windows.size());
-    std::vector<OrientedForm> forms(representative.size());
-    // Work units: each representative's full check, then each window's (mostly a comparison).
-    ProgressCounter counter(progress, "windows", representative.size() + windows.size());
-    tbb::parallel_for(std::size_t{0}, representative.size(), [&](std::size_t c) {
-        counter.add();
-        const std::size_t i = representative[c];
-        detail::TemplateCache& cache = caches.local();
-        ConfigurationComplex built;
-        out[i] = outcome_of(detail::check_window(0, cache.unit(), [&] { return built = build_window(*windows[i].type, windows[i].pattern, rule, cache); }));
-        if (out[i].ok) forms[c] = window_form(built.complex, keys[i].s);  // empty: members get full checks
-    });
-    tbb::parallel_for(std::size_t{0}, windows.size(), [&](std::size_t i) {
-        counter.add();
-        detail::TemplateCache& cache = caches.local();
-        if (!keys[i].keyed) return void(out[i] = full_check(windows[i], rule, cache));
-        const std::size_t rep = representative[class_index[i]];
-        if (rep == i) return;
-        if (!out[rep].ok) return void(out[i] = full_check(windows[i], rule, cache));
-        ConfigurationComplex built;
-        try {
-            built = build_window(*windows[i].type, windows[i].pattern, rule, cache);
-        } catch (const std::exception&) {
-            return void(out[i] = full_check(windows[i], rule, cache));
-        }
-        if (!forms[class_index[i]].empty() && window_form(built.complex, keys[i].s) == forms[class_index[i]])
-            out[i] = out[rep];
-        else
-            out[i] = outcome_of(detail::check_window(0, cache.unit(), [&] { return std::move(built); }));
-    });
-    return out;
+    return detail::check_by_class<detail::WindowKey, ConfigurationComplex, Outcome>(
+        windows.size(),
+        [&](std::size_t i) -> std::optional<std::pair<detail::WindowKey, CubeSymmetry>> {
+            counter.add();
+            try {
+                return detail::window_class_key(windows[i].type->parity, coarse_placements(*windows[i].type, windows[i].pattern, rule), codes);
+            } catch (const std::exception&) {
+                return std::nullopt;  // the rule threw: the full check reports it
+            }
+        },
+        [&](std::size_t i, ConfigurationComplex* keep) {
+            counter.add();
+            ConfigurationComplex built;
+            const Outcome o = outcome_of(detail::check_window(0, caches.local().unit(), [&] { return built = build(i); }));
+            if (keep) *keep = std::move(built);
+            return o;
+        },
+        [&](std::size_t i) {
+            counter.add();
+            return build(i);
+        },
+        check_built, [](const ConfigurationComplex& b, const CubeSymmetry& s) { return window_form(b.complex, s); },
+        [](const Outcome& o) { return o.ok; });
 }
 
 // Every window checked in chunks, each chunk's windows in parallel, then handed to the

@@ -15,6 +15,28 @@ namespace dualhex::compositional_detail {
 using detail::Index3;
 constexpr int kLeaves = 8;  // the 2x2x2 leaves of B(g)
 
+/// The indices of a list of at most 127 octants (each at most once) by octant: a dense
+/// table over the box they span (the rule asks for octants millions of times; a linear
+/// search of the list was a quarter of the compositional run). -1 for an octant not in it.
+class OctantIndex {
+public:
+    OctantIndex() = default;
+    explicit OctantIndex(const std::vector<Index3>& octants);
+    [[nodiscard]] int operator()(const Index3& o) const {
+        std::size_t at = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const std::int64_t d = o[a] - min_[a];
+            if (d < 0 || d >= extent_[a]) return -1;
+            at = at * static_cast<std::size_t>(extent_[a]) + static_cast<std::size_t>(d);
+        }
+        return slot_[at];
+    }
+
+private:
+    Index3 min_{}, extent_{};  // the box the octants span (extent 0: empty)
+    std::vector<std::int8_t> slot_;
+};
+
 // One parity type: the 8 leaves of B(g), g = parity, and the octants they read.
 struct WindowType {
     std::array<int, 3> parity{};
@@ -22,6 +44,7 @@ struct WindowType {
     std::vector<Index3> reads;                 // R(t)
     std::array<std::vector<int>, kLeaves> read_index;  // per leaf: indices into reads
     std::array<int, kLeaves> own{};            // per leaf: its own octant's index
+    OctantIndex read_of;                       // reads' indices by octant
 };
 
 [[nodiscard]] std::vector<int> reach_bits(const TransitionRule& rule);

@@ -28,10 +28,19 @@ using WindowKey = std::array<int, 8>;
 class PlacementCodes {
 public:
     explicit PlacementCodes(const ElementLibrary& library);
-    [[nodiscard]] int code(const std::string& element, const CubeSymmetry& W) const;
+    [[nodiscard]] int code(const std::string& element, const CubeSymmetry& W) const {
+        return code(element_index(element), W.index());
+    }
+    /// The element's index in the library (throws std::out_of_range for an unknown name).
+    [[nodiscard]] int element_index(const std::string& element) const { return index_.at(element); }
+    /// code() by element index and W's index: a table (the class keys ask 48 times a leaf).
+    [[nodiscard]] int code(int element, int W) const {
+        return codes_[static_cast<std::size_t>(element * CubeSymmetry::kOrder + W)];
+    }
 
 private:
-    std::map<std::string, std::pair<int, std::vector<CubeSymmetry>>> stabiliser_;  // name -> (index, stabiliser)
+    std::map<std::string, int> index_;
+    std::vector<int> codes_;  // [element * 48 + W]
 };
 
 /// The key of the window with these coarse leaves (min corners in coarse-leaf units, the
@@ -43,5 +52,14 @@ private:
 [[nodiscard]] std::pair<WindowKey, CubeSymmetry> window_class_key(const std::array<int, 3>& parity,
                                                                   const std::vector<PlacedLeaf>& coarse,
                                                                   const PlacementCodes& codes);
+
+/// A root-boundary half window's key: the image of its root sides (a vector, +-1 on each
+/// root axis) and of its inside coarse leaves (positions outside the root hold kFine, as
+/// fine ones do; the sides tell them apart).
+using BoundaryWindowKey = std::pair<std::array<std::int64_t, 3>, WindowKey>;
+[[nodiscard]] std::pair<BoundaryWindowKey, CubeSymmetry> boundary_class_key(const std::array<int, 3>& parity,
+                                                                            const std::array<int, 3>& sides,
+                                                                            const std::vector<PlacedLeaf>& coarse,
+                                                                            const PlacementCodes& codes);
 
 }  // namespace dualhex::detail

@@ -1,0 +1,149 @@
+// distinct_outcome_tuples (compositional_products.hpp): the shared assignments in parallel
+// chunks (oneTBB), each chunk keeping its first witness per tuple in order, the chunks merged
+// in order: the witnesses and their order are those of a serial enumeration.
+#include "compositional_products.hpp"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <unordered_set>
+
+#include <tbb/parallel_for.h>
+
+namespace dualhex::compositional_detail {
+namespace {
+
+constexpr std::size_t kMaxLeaves = 8;
+using Tuple = std::array<int, kMaxLeaves>;  // unused leaves: -1
+struct TupleHash {
+    std::size_t operator()(const Tuple& s) const {
+        std::size_t h = 1469598103934665603ULL;
+        for (int x : s) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ULL;
+        return h;
+    }
+};
+
+std::uint64_t scatter(std::uint64_t a, const std::vector<int>& indices) {
+    std::uint64_t pattern = 0;
+    for (std::size_t j = 0; j < indices.size(); ++j)
+        if ((a >> j) & 1U) pattern |= std::uint64_t{1} << indices[j];
+    return pattern;
+}
+
+std::uint64_t gather(std::uint64_t pattern, const std::vector<int>& indices) {
+    std::uint64_t a = 0;
+    for (std::size_t j = 0; j < indices.size(); ++j) a |= ((pattern >> indices[j]) & 1U) << j;
+    return a;
+}
+
+// The variables several leaves depend on, and per leaf those only it depends on.
+struct Split {
+    std::vector<int> shared;
+    std::vector<std::vector<int>> private_bits;
+};
+
+Split split_variables(const std::vector<LeafOutcomes>& leaves, std::size_t variables) {
+    std::vector<int> readers(variables, 0);
+    for (const LeafOutcomes& l : leaves)
+        for (int i : l.depends) ++readers[static_cast<std::size_t>(i)];
+    Split out;
+    for (std::size_t i = 0; i < variables; ++i)
+        if (readers[i] > 1) out.shared.push_back(static_cast<int>(i));
+    for (const LeafOutcomes& l : leaves) {
+        out.private_bits.emplace_back();
+        for (int i : l.depends)
+            if (readers[static_cast<std::size_t>(i)] == 1) out.private_bits.back().push_back(i);
+    }
+    return out;
+}
+
+// gather(pattern, depends) for every leaf by tables over the pattern's bytes (the
+// enumeration gathers once per leaf for each of up to 2^19 shared assignments).
+class LeafGather {
+public:
+    explicit LeafGather(const std::vector<LeafOutcomes>& leaves) : bytes_(leaves.size()) {
+        for (std::size_t n = 0; n < leaves.size(); ++n)
+            for (std::size_t k = 0; k < kBytes; ++k)
+                for (std::uint64_t v = 0; v < 256; ++v)
+                    bytes_[n][k][v] = static_cast<std::uint32_t>(gather(v << (8 * k), leaves[n].depends));
+    }
+    [[nodiscard]] std::uint64_t operator()(std::size_t n, std::uint64_t pattern) const {
+        std::uint64_t a = 0;
+        for (std::size_t k = 0; k < kBytes; ++k) a |= bytes_[n][k][(pattern >> (8 * k)) & 255U];
+        return a;
+    }
+
+private:
+    static constexpr std::size_t kBytes = 8;
+    std::vector<std::array<std::array<std::uint32_t, 256>, kBytes>> bytes_;  // 8 KB a leaf: not on a task's stack
+};
+
+// Per leaf: its distinct outcomes over its private variables, a witness each (reused from
+// one shared assignment to the next).
+using Choices = std::array<std::vector<std::pair<int, std::uint64_t>>, kMaxLeaves>;
+
+// Calls emit(tuple, pattern) for every window whose shared variables are the base: a leaf's
+// private variables change only its own outcome, so the windows are the product of per-leaf
+// choices (one witness per distinct outcome).
+template <class Emit>
+void windows_over_base(const std::vector<LeafOutcomes>& leaves, const Split& split, const LeafGather& leaf_gather,
+                       std::uint64_t base, Choices& choices, Emit&& emit) {
+    for (std::size_t n = 0; n < leaves.size(); ++n) {
+        const auto& priv = split.private_bits[n];
+        auto& mine = choices[n];
+        mine.clear();
+        for (std::uint64_t q = 0; q < (std::uint64_t{1} << priv.size()); ++q) {
+            const std::uint64_t extra = scatter(q, priv);
+            const int o = leaves[n].table[leaf_gather(n, base | extra)];
+            if (std::none_of(mine.begin(), mine.end(), [o](const auto& c) { return c.first == o; })) mine.emplace_back(o, extra);
+        }
+    }
+    std::array<std::size_t, kMaxLeaves> at{};  // odometer over the product of the choices
+    for (bool more = true; more;) {
+        Tuple tuple;
+        tuple.fill(-1);
+        std::uint64_t pattern = base;
+        for (std::size_t n = 0; n < leaves.size(); ++n) {
+            const auto& c = choices[n][at[n]];
+            tuple[n] = c.first;
+            pattern |= c.second;
+        }
+        emit(tuple, pattern);
+        more = false;
+        for (std::size_t n = 0; n < leaves.size() && !more; ++n) {
+            if (++at[n] < choices[n].size()) more = true;
+            else at[n] = 0;
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> distinct_outcome_tuples(const std::vector<LeafOutcomes>& leaves, std::size_t variables,
+                                                   int& shared_count) {
+    if (leaves.size() > kMaxLeaves || variables > 63) throw std::length_error("window enumeration: more than 8 leaves or 63 octants");
+    const Split split = split_variables(leaves, variables);
+    shared_count = static_cast<int>(split.shared.size());
+    const std::uint64_t bases = std::uint64_t{1} << split.shared.size();
+    constexpr std::uint64_t kChunk = 4096;
+    using Firsts = std::vector<std::pair<Tuple, std::uint64_t>>;
+    std::vector<Firsts> chunks(static_cast<std::size_t>((bases + kChunk - 1) / kChunk));
+    const LeafGather leaf_gather(leaves);
+    tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+        std::unordered_set<Tuple, TupleHash> seen;
+        Choices choices;
+        for (std::uint64_t s = c * kChunk; s < std::min(bases, (c + 1) * kChunk); ++s)
+            windows_over_base(leaves, split, leaf_gather, scatter(s, split.shared), choices,
+                              [&](const Tuple& tuple, std::uint64_t pattern) {
+                                  if (seen.insert(tuple).second) chunks[c].emplace_back(tuple, pattern);
+                              });
+    });
+    std::unordered_set<Tuple, TupleHash> seen;
+    std::vector<std::uint64_t> witnesses;
+    for (const Firsts& chunk : chunks)
+        for (const auto& [tuple, pattern] : chunk)
+            if (seen.insert(tuple).second) witnesses.push_back(pattern);
+    return witnesses;
+}
+
+}  // namespace dualhex::compositional_detail
