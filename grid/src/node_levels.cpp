@@ -24,14 +24,16 @@ NodeLevels::NodeLevels(const LeafGrid& grid) : levels_(static_cast<std::size_t>(
 }
 
 void NodeLevels::add(int l, std::vector<CellKey128> keys) {
+    sort_unique(keys);
     auto& mine = level(l);
     if (mine.empty()) {
         mine = std::move(keys);
-    } else {
-        keys.insert(keys.end(), mine.begin(), mine.end());
-        mine = std::move(keys);
+        return;
     }
-    sort_unique(mine);
+    std::vector<CellKey128> merged;  // the level is sorted already: merge, do not sort it again
+    merged.reserve(mine.size() + keys.size());
+    std::set_union(mine.begin(), mine.end(), keys.begin(), keys.end(), std::back_inserter(merged));
+    mine = std::move(merged);
 }
 
 std::vector<Leaf> NodeLevels::leaves() const {
