@@ -34,6 +34,7 @@
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/mesher/mesh_size.hpp"
 #include "machine.hpp"
+#include "thread_list.hpp"
 #include "phase_mark.hpp"
 
 using namespace dualhex;
@@ -74,16 +75,6 @@ void run_once(const Input& in, Balance mode, const geometry::SurfaceOctreeOption
     out = grid->leaves();
 }
 
-std::vector<int> parse_list(const char* text) {
-    std::vector<int> out;
-    for (const char* p = text; *p;) {
-        out.push_back(std::atoi(p));
-        while (*p && *p != ',') ++p;
-        if (*p == ',') ++p;
-    }
-    return out;
-}
-
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
@@ -112,7 +103,7 @@ int main(int argc, char** argv) {
     std::vector<Input> inputs;
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
-        if (arg == "--threads" && a + 1 < argc) threads = parse_list(argv[++a]);
+        if (arg == "--threads" && a + 1 < argc) threads = bench::parse_thread_list(argv[++a]);
         else if (arg == "--reps" && a + 1 < argc) reps = std::max(1, std::atoi(argv[++a]));
         else if (arg == "--strong") mode = Balance::Strong;
         else if (arg == "--preset" && a + 1 < argc && mesher::parse_mesh_preset(argv[a + 1])) preset = *mesher::parse_mesh_preset(argv[++a]);

@@ -11,6 +11,17 @@ namespace dualhex::geometry::detail {
 
 namespace {
 
+// The decision's leaf or split recorded in `into`; true iff `cell` is a leaf.
+bool record(const SurfaceRefinement::Decision& d, const Leaf& cell, WalkResult& into) {
+    if (d.split) {
+        into.curvature_splits += d.by_curvature ? 1 : 0;
+        return false;
+    }
+    into.leaves.push_back(cell);
+    into.crossing += d.crosses ? 1 : 0;
+    return true;
+}
+
 // The serial recursion: the budget counts the leaves emitted before each split.
 struct SerialBuilder {
     const SurfaceRefinement& criterion;
@@ -18,12 +29,7 @@ struct SerialBuilder {
 
     void visit(const Leaf& cell, const std::vector<int>& parent_near) {
         const SurfaceRefinement::Decision d = criterion.decide(cell, parent_near);
-        if (!d.split) {
-            out.leaves.push_back(cell);
-            out.crossing += d.crosses ? 1 : 0;
-            return;
-        }
-        out.curvature_splits += d.by_curvature ? 1 : 0;
+        if (record(d, cell, out)) return;
         const std::size_t max_leaves = criterion.options().max_leaves;
         if (out.leaves.size() + 8 > max_leaves)
             throw OctreeTooLarge("surface octree: more than " + std::to_string(max_leaves) +
@@ -46,12 +52,7 @@ public:
 
     void visit(const Leaf& cell, const std::vector<int>& parent_near, WalkResult& into) {
         const SurfaceRefinement::Decision d = criterion_.decide(cell, parent_near);
-        if (!d.split) {
-            into.leaves.push_back(cell);
-            into.crossing += d.crosses ? 1 : 0;
-            return;
-        }
-        into.curvature_splits += d.by_curvature ? 1 : 0;
+        if (record(d, cell, into)) return;
         if (leaves_.fetch_add(7, std::memory_order_relaxed) + 7 > criterion_.options().max_leaves) throw OverBudget{};
         const auto kids = children(cell);
         if (cell.level >= kParallelLevels) {
