@@ -44,7 +44,8 @@ struct Rules {
 // When X's siblings are all nodes (`family`: the level is closed under siblings), a cell
 // p + e with e_a = 0 is found by every sibling whatever its s_a; only the one with s_a = -1
 // on every such axis keeps it, so a family gives each of its 27 (Strong) or 7 (Weak)
-// cells once instead of 64 or 32 candidates to sort.
+// cells once (and the parent 8 times, named by every node for the parent rule) instead of
+// 64 or 32 candidates to sort.
 std::array<Leaf, 8> neighbour_parents(const Leaf& x, Balance mode, bool family) {
     const Leaf p = parent(x);
     const std::int64_t s[3] = {x.i % 2 ? 1 : -1, x.j % 2 ? 1 : -1, x.k % 2 ? 1 : -1};
