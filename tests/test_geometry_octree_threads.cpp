@@ -26,6 +26,14 @@ using geometry_test::unit_cube_surface;
 
 constexpr int kThreads[] = {1, 2, 4};
 
+// Under AddressSanitizer (about 10x slower) the bunny is meshed at 2 % instead of 1 %.
+constexpr bool kSanitized =
+#if defined(__SANITIZE_ADDRESS__)
+    true;
+#else
+    false;
+#endif
+
 // What a walk gives: its leaves and counts, or its refusal.
 struct Outcome {
     std::vector<Leaf> leaves;
@@ -67,7 +75,7 @@ Outcome expect_same_as_serial(const AabbTree& tree, const SurfaceOctreeOptions& 
 SurfaceOctreeOptions fine(const AabbTree& tree) {
     SurfaceOctreeOptions o;
     o.max_depth = 12;
-    o.surface_size = 0.01 * tree.bounds().diagonal().norm();
+    o.surface_size = (kSanitized ? 0.02 : 0.01) * tree.bounds().diagonal().norm();
     o.curvature_angle = 40 * 3.14159265358979 / 180;
     o.curvature_levels = 1;
     return o;
@@ -82,7 +90,7 @@ TEST(GeometryOctreeThreads, BunnyIsTheSerialOctree) {
     tbb::task_arena(1).execute([&] { one = surface_octree(tree, o).grid.leaves(); });
     tbb::task_arena(2).execute([&] { two = surface_octree(tree, o).grid.leaves(); });
     EXPECT_EQ(one, two);
-    EXPECT_GT(one.size(), 50'000u);
+    EXPECT_GT(one.size(), kSanitized ? 10'000u : 50'000u);
 }
 
 TEST(GeometryOctreeThreads, ThicknessAndDefaultsAreTheSerialOctree) {

@@ -24,6 +24,14 @@ namespace {
 
 constexpr int kThreads[] = {1, 2, 4};
 
+// Under AddressSanitizer (about 10x slower) the shared grids are the d5 ones only.
+constexpr bool kSanitized =
+#if defined(__SANITIZE_ADDRESS__)
+    true;
+#else
+    false;
+#endif
+
 // Every refinement of `grid`, each run in arenas of 1, 2 and 4 threads, must equal the
 // reference. Returns the first difference ("" if none).
 std::string compare_all(const LeafGrid& grid) {
@@ -76,13 +84,15 @@ LeafGrid shared_refined(const std::string& name, int splits, unsigned seed) {
 
 TEST(GridRefinementThreads, SharedGridsRefinedAtRandomMatchTheSerialRipple) {
     for (const char* name : {"sphere_strong_d5", "sphere_weak_d5", "sphere_weak_d6"}) {
+        if (kSanitized && std::string(name) == "sphere_weak_d6") continue;
         const LeafGrid grid = shared_refined(name, 200, 7);
         EXPECT_EQ(compare_all(grid), "") << name;
     }
 }
 
 TEST(GridRefinementThreads, WeakSharedGridBalancedStronglyMatchesTheSerialRipple) {
-    const LeafGrid weak = read_leaf_file(std::string(DUALHEX_SHARED_DATA) + "/grids/sphere_weak_d6.leaves");
+    const LeafGrid weak = read_leaf_file(std::string(DUALHEX_SHARED_DATA) + "/grids/" +
+                                         (kSanitized ? "sphere_weak_d5" : "sphere_weak_d6") + ".leaves");
     const LeafGrid expected = testing::reference::pair(weak, Balance::Strong);
     ASSERT_GT(expected.size(), weak.size());  // there is work to do
     for (int t : kThreads) {
