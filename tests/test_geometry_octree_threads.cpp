@@ -17,6 +17,7 @@
 #include "dualhex/geometry/surface_octree.hpp"
 #include "surface_octree_walk.hpp"
 #include "test_geometry_fixture.hpp"
+#include "sanitized.hpp"
 
 namespace dualhex::geometry {
 namespace {
@@ -26,13 +27,8 @@ using geometry_test::unit_cube_surface;
 
 constexpr int kThreads[] = {1, 2, 4};
 
-// Under AddressSanitizer (about 10x slower) the bunny is meshed at 2 % instead of 1 %.
-constexpr bool kSanitized =
-#if defined(__SANITIZE_ADDRESS__)
-    true;
-#else
-    false;
-#endif
+// Under AddressSanitizer the bunny is meshed at 2 % instead of 1 %.
+using testing::kSanitized;
 
 // What a walk gives: its leaves and counts, or its refusal.
 struct Outcome {

@@ -18,19 +18,15 @@
 #include "dualhex/grid/refinement.hpp"
 #include "reference_refinement.hpp"
 #include "test_grid_generators.hpp"
+#include "sanitized.hpp"
 
 namespace dualhex {
 namespace {
 
 constexpr int kThreads[] = {1, 2, 4};
 
-// Under AddressSanitizer (about 10x slower) the shared grids are the d5 ones only.
-constexpr bool kSanitized =
-#if defined(__SANITIZE_ADDRESS__)
-    true;
-#else
-    false;
-#endif
+// Under AddressSanitizer the shared grids are the d5 ones only.
+using testing::kSanitized;
 
 // Every refinement of `grid`, each run in arenas of 1, 2 and 4 threads, must equal the
 // reference. Returns the first difference ("" if none).
