@@ -5,18 +5,10 @@
 // phases' wall and CPU seconds. install() throws (std::exception) on a grid it refuses.
 #include <optional>
 
-#if __has_include(<valgrind/callgrind.h>)
-#include <valgrind/callgrind.h>
-// Under callgrind, each phase's instructions are dumped as a part of their own (named by
-// the phase; bench/run_threads.sh CALLGRIND=1 reads them); elsewhere a no-op.
-#define DUALHEX_PHASE_MARK(name) CALLGRIND_DUMP_STATS_AT(name)
-#else
-#define DUALHEX_PHASE_MARK(name) ((void)0)
-#endif
-
 #include "dualhex/install.hpp"
 #include "dualhex/topology/clipped_dual.hpp"
 #include "machine.hpp"
+#include "phase_mark.hpp"  // each phase its own callgrind part
 
 namespace dualhex::bench {
 

@@ -31,6 +31,7 @@
 #include "flat_grid.hpp"
 #include "install_dual_run.hpp"
 #include "machine.hpp"
+#include "thread_list.hpp"
 
 using namespace dualhex;
 
@@ -81,16 +82,6 @@ Sample run_once(const LeafGrid& grid, const ElementLibrary& library) {
     return s;
 }
 
-std::vector<int> parse_list(const char* text) {
-    std::vector<int> out;
-    for (const char* p = text; *p;) {
-        out.push_back(std::atoi(p));
-        while (*p && *p != ',') ++p;
-        if (*p == ',') ++p;
-    }
-    return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,7 +90,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> grids;
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
-        if (arg == "--threads" && a + 1 < argc) threads = parse_list(argv[++a]);
+        if (arg == "--threads" && a + 1 < argc) threads = bench::parse_thread_list(argv[++a]);
         else if (arg == "--reps" && a + 1 < argc) reps = std::max(1, std::atoi(argv[++a]));
         else if (arg == "--grid" && a + 1 < argc) grids.emplace_back(argv[++a]);
         else if (arg == "--flat" && a + 1 < argc) grids.emplace_back(std::string("flat:") + argv[++a]);

@@ -35,3 +35,6 @@ dualhex_add_test(test_geometry_features SOURCES test_geometry_features.cpp DEPS 
 # Strict readers and the self-intersection check against hostile input (issue 15).
 dualhex_add_test(test_geometry_readers_hostile SOURCES test_geometry_readers_hostile.cpp DEPS dualhex::geometry)
 dualhex_add_test(test_geometry_self_intersection SOURCES test_geometry_self_intersection.cpp DEPS dualhex::geometry)
+# The parallel surface octree against the serial walk (a private header of the layer).
+dualhex_add_test(test_geometry_octree_threads SOURCES test_geometry_octree_threads.cpp DEPS dualhex::geometry TBB::tbb)
+target_include_directories(test_geometry_octree_threads PRIVATE ${PROJECT_SOURCE_DIR}/geometry/src)

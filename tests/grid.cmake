@@ -7,3 +7,4 @@ dualhex_add_test(test_grid_configurations SOURCES test_grid_configurations.cpp D
 dualhex_add_test(test_grid_shared_data SOURCES test_grid_shared_data.cpp DEPS dualhex::grid)
 dualhex_add_test(test_grid_complex SOURCES test_grid_complex.cpp DEPS dualhex::grid)
 dualhex_add_test(test_grid_leaf_file_hostile SOURCES test_grid_leaf_file_hostile.cpp DEPS dualhex::grid)
+dualhex_add_test(test_grid_refinement_threads SOURCES test_grid_refinement_threads.cpp DEPS dualhex::grid)

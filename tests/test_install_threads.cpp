@@ -29,17 +29,13 @@
 #include "dualhex/schemes/weak_rule.hpp"
 #include "dualhex/topology/clipped_dual.hpp"
 #include "test_grid_generators.hpp"
+#include "sanitized.hpp"
 
 namespace dualhex {
 namespace {
 
 // Under AddressSanitizer (about 10x slower) the grids are smaller: d5 only, random depth 3.
-constexpr bool kSanitized =
-#if defined(__SANITIZE_ADDRESS__)
-    true;
-#else
-    false;
-#endif
+using testing::kSanitized;
 
 const ElementLibrary& library() {
     static const std::shared_ptr<const ElementLibrary> lib = load_default_element_library();

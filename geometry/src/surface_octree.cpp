@@ -4,9 +4,12 @@
 #include <limits>
 #include <stdexcept>
 
+#include <tbb/parallel_for.h>
+
 #include "dualhex/geometry/surface_curvature.hpp"
 #include "dualhex/geometry/triangle_geometry.hpp"
 #include "dualhex/grid/refinement.hpp"
+#include "surface_octree_walk.hpp"
 
 namespace dualhex::geometry {
 
@@ -22,17 +25,18 @@ std::vector<double> local_thickness(const AabbTree& tree) {
     const auto& s = tree.surface();
     const double diag = tree.bounds().diagonal().norm();
     std::vector<double> out(s.triangles.size(), diag);
-    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    // One ray per triangle, each writing its own entry: the same values for any thread count.
+    tbb::parallel_for(std::size_t{0}, s.triangles.size(), [&](std::size_t t) {
         const auto& tri = s.triangles[t];
         const Eigen::Vector3d& a = s.vertices[tri[0]];
         const Eigen::Vector3d& b = s.vertices[tri[1]];
         const Eigen::Vector3d& c = s.vertices[tri[2]];
         const Eigen::Vector3d n = (b - a).cross(c - a);
-        if (!(n.norm() > 0)) continue;  // degenerate triangle: no normal
+        if (!(n.norm() > 0)) return;  // degenerate triangle: no normal
         const Eigen::Vector3d centroid = (a + b + c) / 3.0;
         if (auto hit = tree.first_hit(centroid, -n.normalized(), 1e-9 * diag, static_cast<int>(t)))
             out[t] = std::min(diag, hit->t);
-    }
+    });
     return out;
 }
 
@@ -137,31 +141,6 @@ SurfaceRefinement::Decision SurfaceRefinement::decide(const Leaf& cell, const st
     return d;
 }
 
-namespace {
-// The serial recursion over SurfaceRefinement, with the leaf budget.
-struct Builder {
-    const SurfaceRefinement& criterion;
-    std::vector<Leaf> leaves;
-    std::size_t crossing = 0, curvature_splits = 0;
-
-    void visit(const Leaf& cell, const std::vector<int>& parent_near) {
-        const SurfaceRefinement::Decision d = criterion.decide(cell, parent_near);
-        if (!d.split) {
-            leaves.push_back(cell);
-            crossing += d.crosses ? 1 : 0;
-            return;
-        }
-        curvature_splits += d.by_curvature ? 1 : 0;
-        const std::size_t max_leaves = criterion.options().max_leaves;
-        if (leaves.size() + 8 > max_leaves)
-            throw OctreeTooLarge("surface octree: more than " + std::to_string(max_leaves) +
-                                     " leaves (the size, thickness or curvature criteria ask for too fine cells)",
-                                 leaves.size() + 8);
-        for (const Leaf& child : children(cell)) visit(child, d.near);
-    }
-};
-}  // namespace
-
 bool surface_crosses(const AabbTree& tree, const RootCube& root, const Leaf& cell) {
     return tree.intersects_box(root.box(cell));
 }
@@ -172,11 +151,10 @@ SurfaceOctree surface_octree(const AabbTree& tree, const SurfaceOctreeOptions& o
     out.root = criterion.root();
     out.size_level = criterion.size_level();
     out.thickness = criterion.thickness();
-    Builder b{criterion, {}, 0, 0};
-    b.visit(Leaf{}, criterion.all_triangles());
-    out.crossing_leaves = b.crossing;
-    out.curvature_splits = b.curvature_splits;
-    out.grid = LeafGrid(std::move(b.leaves), tree.surface().source);
+    detail::WalkResult walk = detail::parallel_walk(criterion);  // the serial walk's leaves, in parallel
+    out.crossing_leaves = walk.crossing;
+    out.curvature_splits = walk.curvature_splits;
+    out.grid = LeafGrid(std::move(walk.leaves), tree.surface().source);
     return out;
 }
 

@@ -1,8 +1,12 @@
 #include "dualhex/grid/leaf_grid.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "dualhex/grid/input_error.hpp"
 
@@ -55,10 +59,22 @@ void LeafGrid::index_ancestors() {
 }
 
 // With no overlap, the leaves tile iff every child of every interior node is known
-// (a leaf or interior). The first unknown child is a maximal uncovered region.
+// (a leaf or interior). Checked first over ranges of the map's slots in parallel (a plain
+// yes or no); only a grid with a gap is walked from the root, serially, so the gap named
+// (the first unknown child met, a maximal uncovered region) is the same for any number of
+// threads. Every interior node is reached by that walk (its ancestors are all interior).
 void LeafGrid::find_gap() const {
     const Leaf root{};
     if (!nodes_.contains(root)) throw InputError(source_, 0, "gap: no leaves, the root cube 0 0 0 0 is not covered");
+    std::atomic<bool> gap{false};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nodes_.slot_count(), 1 << 14), [&](const auto& r) {
+        nodes_.for_each_in(r.begin(), r.end(), [&](const Leaf& cell, std::int32_t v) {
+            if (v >= 0 || gap.load(std::memory_order_relaxed)) return;
+            for (const Leaf& child : children(cell))
+                if (!nodes_.contains(child)) gap.store(true, std::memory_order_relaxed);
+        });
+    });
+    if (!gap.load()) return;
     std::vector<Leaf> stack{root};
     while (!stack.empty()) {
         const Leaf cell = stack.back();

@@ -1,99 +1,112 @@
 #include "dualhex/grid/refinement.hpp"
 
+#include <algorithm>
+#include <array>
+#include <optional>
 #include <vector>
 
-#include "octree.hpp"
+#include <tbb/parallel_for.h>
+
+#include "node_levels.hpp"
 
 namespace dualhex {
 
 namespace {
 
-using detail::Octree;
+using detail::CellKey128;
+using detail::NodeLevels;
 
-// Balanced (for `mode`) iff every interior node's same-level neighbours through the
-// constrained contacts are nodes too (not strictly inside a leaf): the leaves inside an
-// interior node P are at level >= level(P)+1 and touch each neighbour of P through the
-// same kind of contact. So: visit interior nodes finest level first and split the leaf
-// covering each missing neighbour down to that neighbour. Splits create interior nodes
-// only at coarser levels, which are visited later; every split is forced, so the result
-// is the least balanced refinement. One pass over interior nodes (~1/7 of the leaves).
-// `seeds`: the interior nodes that may lack neighbours (all of them, or those just split
-// when the rest is known to be balanced).
-void balance_tree(Octree& tree, Balance mode, const std::vector<Leaf>& seeds) {
-    const auto offsets = neighbour_offsets(mode);
-    std::vector<std::vector<Leaf>> by_level(kMaxLevel + 1);
-    for (const Leaf& node : seeds) by_level[static_cast<std::size_t>(node.level)].push_back(node);
-    for (int level = kMaxLevel; level >= 1; --level) {
-        const auto& bucket = by_level[static_cast<std::size_t>(level)];  // only coarser buckets grow
-        for (std::size_t n = 0; n < bucket.size(); ++n) {
-            for (const Offset& d : offsets) {
-                const Leaf cell = neighbour(bucket[n], d);
-                if (!cell.valid()) continue;
-                for (auto cover = tree.covering_leaf(cell); cover && cover->level < level;
-                     cover = tree.covering_leaf(cell)) {
-                    tree.split(*cover);
-                    by_level[static_cast<std::size_t>(cover->level)].push_back(*cover);
-                }
-            }
-        }
+// The least refinement as a closure. A refinement is its set of interior nodes; the least
+// one satisfying the conditions is the smallest set containing the input's interior nodes
+// and closed under
+//   - parent: a node's parent is a node (it is an octree);
+//   - balance: for an interior node X of level L, the parents of X's same-level neighbours
+//     (through the contacts `mode` constrains) are interior, so those neighbours are nodes
+//     and no leaf beside X is two levels coarser than X's children (this is the condition
+//     of predicates.cpp; every split it forces is forced, so the result is the least one);
+//   - pairing: X's siblings are interior (no node has both leaf and interior children).
+// Parent and balance go one level up and pairing stays on the level, so one sweep from
+// the finest level to the root closes the set: when level L is reached nothing can add
+// to it any more. Each level is a sorted array of 128-bit keys (node_levels.hpp), found in
+// parallel and sorted: the same arrays, so the same grid, for any number of threads.
+// (Sundar, Sampath and Biros 2008 balance linear octrees by sorting too; this is the plain
+// level-by-level closure, not their algorithm.)
+struct Rules {
+    std::optional<Balance> balance;
+    bool pair = false;
+};
+
+// The parents of X's same-level neighbours: with s_a = -1 if X is on the low side of its
+// parent along axis a (even coordinate), +1 otherwise, a neighbour X + d has parent
+// parent(X) + e with e_a = s_a iff d_a = s_a, else 0. The 26 directions give all 8 such
+// e (Strong); the 6 faces give e = 0 and the three s_a along one axis (Weak). Cells
+// outside the root are left out (level -1).
+// When X's siblings are all nodes (`family`: the level is closed under siblings), a cell
+// p + e with e_a = 0 is found by every sibling whatever its s_a; only the one with s_a = -1
+// on every such axis keeps it, so a family gives each of its 27 (Strong) or 7 (Weak)
+// cells once (and the parent 8 times, named by every node for the parent rule) instead of
+// 64 or 32 candidates to sort.
+std::array<Leaf, 8> neighbour_parents(const Leaf& x, Balance mode, bool family) {
+    const Leaf p = parent(x);
+    const std::int64_t s[3] = {x.i % 2 ? 1 : -1, x.j % 2 ? 1 : -1, x.k % 2 ? 1 : -1};
+    std::array<Leaf, 8> out;
+    for (int e = 0; e < 8; ++e) {
+        const bool on[3] = {(e & 1) != 0, (e & 2) != 0, (e & 4) != 0};
+        bool keep = mode == Balance::Strong || on[0] + on[1] + on[2] <= 1;
+        for (int a = 0; a < 3; ++a) keep = keep && (on[a] || !family || s[a] == -1);
+        const Leaf c{p.level, p.i + (on[0] ? s[0] : 0), p.j + (on[1] ? s[1] : 0), p.k + (on[2] ? s[2] : 0)};
+        out[static_cast<std::size_t>(e)] = keep && c.valid() ? c : Leaf{-1, 0, 0, 0};
     }
-}
-
-// Pairs the tree, given `candidates`: every interior node that may have both leaf and
-// interior children. Splitting the leaf children of a mixed node makes that node
-// all-interior and creates only all-leaf nodes, so one pass suffices.
-void pairing_pass(Octree& tree, const std::vector<Leaf>& candidates) {
-    for (const Leaf& node : candidates) {
-        const auto kids = children(node);
-        bool any_leaf = false, any_interior = false;
-        for (const Leaf& c : kids) (tree.is_leaf(c) ? any_leaf : any_interior) = true;
-        if (!any_leaf || !any_interior) continue;
-        for (const Leaf& c : kids) {
-            if (!tree.is_leaf(c)) continue;
-            tree.split(c);
-        }
-    }
-}
-
-// A node can become mixed only when one of its children is split.
-std::vector<Leaf> parents_of(const std::vector<Leaf>& split) {
-    std::vector<Leaf> out;
-    out.reserve(split.size());
-    for (const Leaf& s : split)
-        if (s.level > 0) out.push_back(parent(s));
     return out;
+}
+
+// The cells that level `l`'s nodes force one level up: their parents and, with a balance
+// rule, their neighbours' parents.
+std::vector<CellKey128> forced_above(const std::vector<CellKey128>& nodes, int l, const Rules& rules) {
+    if (!rules.balance) {
+        std::vector<CellKey128> out(nodes.size());
+        tbb::parallel_for(std::size_t{0}, nodes.size(),
+                          [&](std::size_t n) { out[n] = detail::key_of(parent(detail::cell_of(l, nodes[n]))); });
+        return out;
+    }
+    constexpr CellKey128 kNone = ~CellKey128{0};  // no cell has this key (coordinates < 2^30)
+    std::vector<CellKey128> out(8 * nodes.size());
+    tbb::parallel_for(std::size_t{0}, nodes.size(), [&](std::size_t n) {
+        const Leaf x = detail::cell_of(l, nodes[n]);
+        const auto cells = neighbour_parents(x, *rules.balance, rules.pair);
+        out[8 * n] = detail::key_of(parent(x));  // e = 0 may be another sibling's: the parent rule needs it here
+        for (std::size_t c = 1; c < 8; ++c) out[8 * n + c] = cells[c].level < 0 ? kNone : detail::key_of(cells[c]);
+    });
+    out.erase(std::remove(out.begin(), out.end(), kNone), out.end());
+    return out;
+}
+
+// Level `l` closed under siblings: every child of every node's parent.
+void close_under_siblings(NodeLevels& nodes, int l) {
+    const auto& level = nodes.level(l);
+    std::vector<CellKey128> siblings(8 * level.size());
+    tbb::parallel_for(std::size_t{0}, level.size(), [&](std::size_t n) {
+        const auto cells = children(parent(detail::cell_of(l, level[n])));
+        for (std::size_t c = 0; c < 8; ++c) siblings[8 * n + c] = detail::key_of(cells[c]);
+    });
+    nodes.add(l, std::move(siblings));
+}
+
+LeafGrid least_refinement(const LeafGrid& grid, const Rules& rules) {
+    NodeLevels nodes(grid);
+    for (int l = nodes.deepest(); l >= 1; --l) {
+        if (rules.pair) close_under_siblings(nodes, l);
+        nodes.add(l - 1, forced_above(nodes.level(l), l, rules));
+    }
+    return LeafGrid(nodes.leaves());
 }
 
 }  // namespace
 
-LeafGrid balance(const LeafGrid& grid, Balance mode) {
-    Octree tree(grid);
-    balance_tree(tree, mode, tree.interior_nodes());
-    return tree.to_grid();
-}
+LeafGrid balance(const LeafGrid& grid, Balance mode) { return least_refinement(grid, {mode, false}); }
 
-LeafGrid pair_only(const LeafGrid& grid) {
-    Octree tree(grid);
-    pairing_pass(tree, tree.interior_nodes());
-    return tree.to_grid();
-}
+LeafGrid pair_only(const LeafGrid& grid) { return least_refinement(grid, {std::nullopt, true}); }
 
-// Alternates, each round seeded only with what the previous one changed: nodes split by
-// pairing are the only ones that can lack neighbours; parents of nodes split by
-// balancing are the only ones that can be mixed.
-LeafGrid pair(const LeafGrid& grid, Balance mode) {
-    Octree tree(grid);
-    balance_tree(tree, mode, tree.interior_nodes());
-    (void)tree.take_splits();
-    std::vector<Leaf> candidates = tree.interior_nodes();
-    for (;;) {
-        pairing_pass(tree, candidates);
-        const std::vector<Leaf> paired = tree.take_splits();
-        if (paired.empty()) break;
-        balance_tree(tree, mode, paired);
-        candidates = parents_of(tree.take_splits());
-    }
-    return tree.to_grid();
-}
+LeafGrid pair(const LeafGrid& grid, Balance mode) { return least_refinement(grid, {mode, true}); }
 
 }  // namespace dualhex

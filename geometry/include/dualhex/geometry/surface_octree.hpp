@@ -31,6 +31,12 @@
 // a ray leaving through a near-tangent neighbour can under-estimate (refines more, never
 // less). Surfaces with no hit (open or inward oriented) fall back to the bbox diagonal.
 //
+// Built in parallel (oneTBB; src/surface_octree_walk.cpp): the 8 subtrees of every split
+// cell above level 4 are walked by tasks and concatenated in child order, so the leaves are
+// the serial recursion's, in its depth-first (Morton) order, for any number of threads;
+// the leaf budget refuses exactly as the serial walk does (the walk falls back to it past
+// the budget). The local thickness's ray casts run in parallel too.
+//
 // The octree is neither balanced nor paired; paired_surface_octree adds
 // pair(grid, mode) from the grid layer (least paired + balanced refinement).
 #include <cstddef>

@@ -58,8 +58,16 @@ public:
     /// Calls f(cell, value) for every entry, in unspecified order.
     template <class F>
     void for_each(F&& f) const {
-        for (const auto& slot : slots_)
-            if (slot.key.hi != 0) f(unpack(slot.key), slot.value);
+        for_each_in(0, slots_.size(), f);
+    }
+    /// The number of slots: for_each_in over disjoint slot ranges visits disjoint entries
+    /// (read-only, so ranges can be visited in parallel).
+    [[nodiscard]] std::size_t slot_count() const { return slots_.size(); }
+    /// Calls f(cell, value) for the entries in slots [begin, end).
+    template <class F>
+    void for_each_in(std::size_t begin, std::size_t end, F&& f) const {
+        for (std::size_t s = begin; s < end; ++s)
+            if (slots_[s].key.hi != 0) f(unpack(slots_[s].key), slots_[s].value);
     }
 
 private:
