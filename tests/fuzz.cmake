@@ -65,6 +65,7 @@ if(dualhex_fuzz_ok)
   endforeach()
   find_library(DUALHEX_FUZZ_GMPXX gmpxx)
   find_library(DUALHEX_FUZZ_GMP gmp)
+  find_library(DUALHEX_FUZZ_TBB tbb)  # the leaf grid's checks run in parallel (oneTBB)
 
   # Seeds: the harness's own (tests/fuzz/seeds/<reader>) and the small shared files.
   file(GLOB shared_small ${DUALHEX_SHARED_DATA}/surfaces/* ${DUALHEX_SHARED_DATA}/grids/*)
@@ -82,7 +83,7 @@ if(dualhex_fuzz_ok)
 
     if(reader STREQUAL "leaves")
       set(objects ${leaves_objects})
-      set(libs)
+      set(libs ${DUALHEX_FUZZ_TBB})
     else()
       set(objects ${surface_objects})
       set(libs ${DUALHEX_FUZZ_GMPXX} ${DUALHEX_FUZZ_GMP})
