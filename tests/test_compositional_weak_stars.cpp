@@ -1,15 +1,16 @@
 // W7 of proofs/README.md, relevant bits only (checkers/compositional_weak_stars.hpp): which
-// visible context bits change a weak leaf's cells at each point of the leaf, and how many
-// cell statuses the possible leaves at a vertex read jointly.
+// visible context bits change a weak leaf's cells at each point of the leaf, what the leaves
+// at a vertex read jointly, and the star enumeration (one parity here: the full run is the
+// documented long run, proofs/README.md), which must fail for wrong MR elements.
 #include <gtest/gtest.h>
 
 #include <bit>
-#include <cstdio>
 #include <map>
 
 #include "dualhex/checkers/compositional_weak_stars.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/weak_rule.hpp"
+#include "test_wrong_rules.hpp"
 
 namespace dualhex {
 namespace {
@@ -19,38 +20,80 @@ const ElementLibrary& library() {
     return lib;
 }
 
-const WeakStarInfluence& weak_influence(StarPiece kind = StarPiece::Cells) {
-    static const WeakStarInfluence cells = weak_star_influence(WeakRule(), library(), StarPiece::Cells);
-    static const WeakStarInfluence faces = weak_star_influence(WeakRule(), library(), StarPiece::Faces);
-    return kind == StarPiece::Cells ? cells : faces;
+const WeakStarInfluence& weak_influence() {
+    static const WeakStarInfluence r = weak_star_influence(WeakRule(), library());
+    return r;
 }
 
 TEST(WeakStars, InfluenceOverTheVisibleDomain) {
-  for (StarPiece kind : {StarPiece::Cells, StarPiece::Faces}) {
-    const WeakStarInfluence& r = weak_influence(kind);
+    const WeakStarInfluence& r = weak_influence();
     EXPECT_EQ(r.contexts, 4096);
     EXPECT_EQ(r.refused, 0);
-    std::printf("unit %lld, %zu positions, %d distinct pieces, max relevant %d\n", static_cast<long long>(r.unit),
-                r.positions.size(), r.distinct_pieces, r.max_relevant());
-    for (const auto& [k, n] : r.relevant_histogram) std::printf("  %d relevant bits: %d positions\n", k, n);
+    EXPECT_EQ(r.positions.size(), 44u);  // pinned: a change of an element shows here
+    EXPECT_EQ(r.distinct_pieces, 313);
+    int corners = 0;
     for (const auto& p : r.positions) {
-        const bool corner = (p.position.x % r.unit == 0) && (p.position.y % r.unit == 0) && (p.position.z % r.unit == 0);
-        if (corner)
-            std::printf("  corner (%lld,%lld,%lld): relevant 0x%03x (%d), %d pieces, vertex in %d\n",
-                        static_cast<long long>(p.position.x), static_cast<long long>(p.position.y),
-                        static_cast<long long>(p.position.z), p.relevant, std::popcount(p.relevant), p.pieces,
-                        p.vertex_contexts);
+        const bool corner = p.position.x % r.unit == 0 && p.position.y % r.unit == 0 && p.position.z % r.unit == 0;
+        if (!corner) continue;
+        ++corners;
+        EXPECT_EQ(p.vertex_contexts, 4096);  // a leaf corner is a vertex of every element
     }
-  }
+    EXPECT_EQ(corners, 8);
+    // The relevance does not localise: at the application point and at the far corner all
+    // 12 bits change the cells there.
+    EXPECT_EQ(r.max_relevant(), 12);
 }
 
-TEST(WeakStars, JointReads) {
-  for (StarPiece kind : {StarPiece::Cells, StarPiece::Faces})
-    for (const WeakStarReads& w : weak_star_reads(weak_influence(kind))) {
-        std::printf("g=%d%d%d: %d vertices, max leaves %d, max statuses %d, max shared %d at (%lld,%lld,%lld)\n",
-                    w.parity[0], w.parity[1], w.parity[2], w.vertices, w.max_leaves, w.max_statuses, w.max_shared,
-                    static_cast<long long>(w.worst.x), static_cast<long long>(w.worst.y), static_cast<long long>(w.worst.z));
-        for (const auto& [k, n] : w.shared_histogram) std::printf("   shared %d: %d\n", k, n);
+// The piece at q is a function of the relevant bits alone: grouping the 4,096 contexts by
+// their relevant bits, every group has one piece (what the flip argument proves).
+TEST(WeakStars, ThePieceIsAFunctionOfTheRelevantBits) {
+    const WeakStarInfluence& r = weak_influence();
+    for (std::size_t q = 0; q < r.positions.size(); ++q) {
+        std::map<int, int> by_relevant;
+        for (int c = 0; c < 4096; ++c) {
+            const auto [it, fresh] = by_relevant.emplace(c & r.positions[q].relevant, r.piece[q][static_cast<std::size_t>(c)]);
+            ASSERT_EQ(it->second, r.piece[q][static_cast<std::size_t>(c)]) << q << ' ' << c;
+        }
+        EXPECT_EQ(by_relevant.size(), std::size_t{1} << std::popcount(r.positions[q].relevant));
+    }
+}
+
+TEST(WeakStars, WhatTheLeavesAtAVertexRead) {
+    const auto reads = weak_star_reads(weak_influence());
+    ASSERT_EQ(reads.size(), 8u);
+    for (const WeakStarReads& w : reads) {
+        EXPECT_GT(w.vertices, 0);
+        EXPECT_GE(w.configurations, w.vertices);  // every candidate has the all-level-m configuration
+        EXPECT_EQ(w.max_leaves, 8);
+        EXPECT_LE(w.max_shared, w.max_free);
+        EXPECT_LT(w.max_shared, 56);  // the box window's shared cells (W7 before)
+    }
+}
+
+WeakStarOptions parity_zero() {
+    WeakStarOptions o;
+    o.parities = 1;  // g even: 11,947 stars, under a second of CPU
+    return o;
+}
+
+TEST(WeakStars, EveryStarAtAnEvenPointIsValid) {
+    const WeakStarCheck r = run_weak_stars(WeakRule(), library(), weak_influence(), parity_zero());
+    for (const auto& f : r.failures) ADD_FAILURE() << f;
+    EXPECT_TRUE(r.all_passed());
+    EXPECT_EQ(r.pairs, 3599);  // pinned: the enumeration's own counts
+    EXPECT_EQ(r.stars, 11947);
+    EXPECT_EQ(r.passed, r.stars);
+}
+
+// A rule with E-MR mis-oriented, or without VC3-MR, fails there.
+TEST(WeakStars, WrongMrElementsAreCaught) {
+    for (bool missing : {false, true}) {
+        const test::WeakMutant rule(missing);
+        WeakStarOptions o = parity_zero();
+        o.stop_after = 1;
+        const WeakStarCheck r = run_weak_stars(rule, library(), weak_star_influence(rule, library()), o);
+        EXPECT_GT(r.failed, 0) << (missing ? "missing VC3-MR" : "E-MR mis-oriented");
+        EXPECT_FALSE(r.all_passed());
     }
 }
 

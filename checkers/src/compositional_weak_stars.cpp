@@ -32,13 +32,16 @@ std::array<std::array<int, 3>, 9> octant_bits(const TransitionRule& rule) {
     return out;
 }
 
-LeafContext context_of(int index, const std::array<std::array<int, 3>, 9>& bits) {
-    LeafContext ctx;
+}  // namespace
+
+LeafContext set_visible_context(LeafContext ctx, int index, const std::array<std::array<int, 3>, 9>& bits) {
     for (int i = 0; i < kOctantBits; ++i)
         if ((index >> i) & 1) ctx.set_fine(bits[static_cast<std::size_t>(i)][0], bits[static_cast<std::size_t>(i)][1], bits[static_cast<std::size_t>(i)][2]);
     ctx.edge_two_finer = static_cast<std::uint8_t>(index >> kOctantBits);
     return ctx;
 }
+
+namespace {
 
 // A cell by its oriented faces (those through the point `at` only, unless `at` is null):
 // each loop rotated to start at its least point, faces sorted.
@@ -107,7 +110,7 @@ WeakStarInfluence weak_star_influence(const TransitionRule& rule, const ElementL
     std::map<LatticePoint, int> index;
     for (int c = 0; c < kContexts; ++c) {
         ++r.contexts;
-        const LeafContext ctx = context_of(c, r.octant_bits);
+        const LeafContext ctx = set_visible_context({}, c, r.octant_bits);
         try {
             const std::optional<Placement> p = rule.place(ctx);
             if (p) detail::check_placement_symmetry(*p);

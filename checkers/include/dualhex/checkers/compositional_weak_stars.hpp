@@ -15,6 +15,7 @@
 // two contexts that agree on them are joined by flips of irrelevant bits).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -52,28 +53,64 @@ struct WeakStarInfluence {
     [[nodiscard]] int max_relevant() const;
 };
 
+/// `ctx` (its frame kept) with the local bits of visible context `index` set.
+[[nodiscard]] LeafContext set_visible_context(LeafContext ctx, int index, const std::array<std::array<int, 3>, 9>& bits);
+
 /// The influence table of a rule over its visible domain (4,096 contexts; a refused
 /// context counts as a piece of its own at every position).
 [[nodiscard]] WeakStarInfluence weak_star_influence(const TransitionRule& rule, const ElementLibrary& library,
                                                     StarPiece kind = StarPiece::Cells);
 
 /// The joint reads of the star of a vertex v near a lattice point g (W7, relevant bits
-/// only): every cell of levels m, m+1, m+2 whose closure holds v is taken as a possible
-/// leaf at v (an over-approximation: in a grid some are not leaves); each reads, through
-/// its context, the statuses f (proofs/README.md "Statuses") of the cells its relevant
-/// bits at v name, plus those that decide whether it is a leaf (its parent's, and for
-/// levels m+1, m+2 its grandparent's; a level-m cell's grandparent is subdivided by the
-/// choice of m). Counted per parity t = g mod 2 over every v of the level-(m+2) vertex
-/// lattice of the leaves' elements within 1/2 of g (max norm, level-m units).
+/// only). For every candidate v within 1/2 of g (max norm, level-m units: every element
+/// vertex of a level-m..m+2 cell near g, every corner of a level-(m+3) cell) and every
+/// possible configuration of the leaves at v (a level m..m+3 per sign octant: min m,
+/// pairing, weak balance across faces), the statuses f (proofs/README.md "Statuses") that
+/// the leaves' relevant bits at v name, less those the configuration forces; "shared": read
+/// by two or more of the leaves. A joint enumeration in the manner of the strong windows
+/// would run over 2^shared assignments per (v, configuration), each leaf's private ones as
+/// a product. Units: a level-(m+3) cell is U.
 struct WeakStarReads {
     std::array<int, 3> parity{};
-    int vertices = 0;        ///< positions v considered (a vertex of some possible leaf's element)
-    int max_statuses = 0;    ///< max over v: distinct cell statuses read by the leaves at v
-    int max_shared = 0;      ///< max over v: of those, read by two or more leaves at v
-    int max_leaves = 0;      ///< max over v: possible leaves at v
-    LatticePoint worst;      ///< a v attaining max_shared (units: a level-(m+2) leaf is U)
-    std::map<int, int> shared_histogram;  ///< shared statuses -> vertices
+    int vertices = 0;         ///< candidate positions v
+    long configurations = 0;  ///< (v, configuration) pairs
+    int max_free = 0;         ///< max over pairs: free statuses read
+    int max_shared = 0;       ///< max over pairs: of those, read by two or more leaves
+    int max_leaves = 0;       ///< max over pairs: distinct leaves at v
+    double joint = 0;         ///< sum over pairs of 2^shared
+    LatticePoint worst;       ///< a v attaining max_shared (relative to g)
+    std::array<int, 8> worst_levels{};  ///< and its configuration (level - m per sign octant)
+    std::map<int, long> shared_histogram;  ///< shared statuses -> pairs
 };
 [[nodiscard]] std::vector<WeakStarReads> weak_star_reads(const WeakStarInfluence& influence);
+
+/// The star enumeration of W7 (relevant bits only): for every (v, configuration) of
+/// weak_star_reads, every assignment of the free statuses read by two or more leaves at v,
+/// and per leaf every distinct piece over its private ones; each distinct tuple of pieces
+/// (a star: the whole cells at v of the leaves at v) is built and v is checked by dualhex's
+/// validator (6 edges, octahedral link, edges of 4 cells in one cycle, faces of two cells
+/// with opposite sides, a cube as dual cell). A tuple with no cell at v (v is not a vertex)
+/// is skipped. Computed by dualhex: no certificate stands for it.
+struct WeakStarCheck {
+    std::string rule;
+    long pairs = 0;        ///< (v, configuration) pairs
+    long assignments = 0;  ///< joint assignments of shared statuses enumerated
+    long stars = 0;        ///< distinct stars built and checked (per pair)
+    long empty = 0;        ///< tuples with no cell at v
+    long passed = 0, failed = 0;
+    std::vector<std::string> failures;  ///< the first few, described
+    [[nodiscard]] bool all_passed() const { return stars > 0 && failed == 0; }
+};
+
+struct WeakStarOptions {
+    unsigned parities = 0xFF;  ///< bit t: run parity t (g = (t&1, t>>1&1, t>>2&1))
+    /// Optional: only the candidate vertices v (relative to g) it accepts (a partial run).
+    std::function<bool(const LatticePoint&)> vertex;
+    long stop_after = 0;  ///< stop once this many stars failed (0: never; counts then partial)
+};
+
+/// Runs it (oneTBB over the candidate vertices).
+[[nodiscard]] WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& library,
+                                           const WeakStarInfluence& influence, const WeakStarOptions& options = {});
 
 }  // namespace dualhex
