@@ -97,7 +97,7 @@ CheckOutcome check_compositional_weak() {
                   std::to_string(r.nonconcave_ignored) + "/" + std::to_string(r.nonconcave_contexts) +
                   "; levels " + std::to_string(at.front()) + ".." + std::to_string(at.back()) +
                   " at one point, 8 orientations installed: " + std::to_string(spread_valid) + "/8 valid" +
-                  " (the window enumeration of weak balance is not done: proofs/README.md)";
+                  " (W7: the star enumeration is a separate run, its counts below; proofs/README.md)";
     std::ostringstream report;
     report << "  elements over the visible domain:";
     for (const auto& [name, n] : r.elements) report << ' ' << name << ' ' << n;
@@ -145,7 +145,7 @@ CheckOutcome check_compositional_weak() {
 void add_compositional_checks(CheckRegistry& registry) {
     registry.add({"proofs.weak_balance",
                   "weak balance: the weak rule's reach, lemma and visible domain; four levels at a point (tested); "
-                  "what a box window would read (the weak window enumeration is not done)",
+                  "what a box window would read; W7's influence table and what the leaves at a vertex read",
                   check_compositional_weak});
     registry.add({"proofs.compositional",
                   "every strongly balanced paired grid: the reduction lemma and every 2x2x2-leaf window (strong rule)",
