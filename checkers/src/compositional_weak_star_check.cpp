@@ -3,6 +3,7 @@
 // over the free statuses their relevant bits read (shared ones jointly, each leaf's private
 // ones per leaf), each tuple built as the leaves' elements and checked at v.
 #include <atomic>
+#include <cmath>
 #include <mutex>
 #include <sstream>
 
@@ -247,6 +248,9 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
                 Configurations(v, inf.unit).each([&](const std::array<int, 8>&, const std::array<Leaf, 8>& leaves) {
                     ++local.pairs;
                     const Pair p = split(inf, index, v, g, leaves);
+                    local.joint_bound += std::ldexp(1.0, p.n_shared);
+                    local.max_shared = std::max(local.max_shared, p.n_shared);
+                    if (options.count_only) return;
                     for (const auto& [pieces, contexts] : stars_of(inf, p, local.assignments)) {
                         if (std::all_of(pieces.begin(), pieces.end(), [](int x) { return x == -1; })) {
                             ++local.empty;
@@ -270,6 +274,8 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
             result.assignments += local.assignments;
             result.stars += local.stars;
             result.empty += local.empty;
+            result.joint_bound += local.joint_bound;
+            result.max_shared = std::max(result.max_shared, local.max_shared);
             result.passed += local.passed;
             result.failed += local.failed;
             for (auto& f : local.failures)

@@ -98,6 +98,10 @@ struct WeakStarCheck {
     long stars = 0;        ///< distinct stars built and checked (per pair)
     long empty = 0;        ///< tuples with no cell at v
     long passed = 0, failed = 0;
+    /// Sum over pairs of 2^(shared statuses, those tied by implications included): the
+    /// joint loop's size before the implications prune it; and the largest exponent.
+    double joint_bound = 0;
+    int max_shared = 0;
     std::vector<std::string> failures;  ///< the first few, described
     [[nodiscard]] bool all_passed() const { return stars > 0 && failed == 0; }
 };
@@ -107,6 +111,7 @@ struct WeakStarOptions {
     /// Optional: only the candidate vertices v (relative to g) it accepts (a partial run).
     std::function<bool(const LatticePoint&)> vertex;
     long stop_after = 0;  ///< stop once this many stars failed (0: never; counts then partial)
+    bool count_only = false;  ///< only the pairs, joint_bound and max_shared (no stars)
 };
 
 /// Runs it (oneTBB over the candidate vertices).
