@@ -5,6 +5,7 @@
 #include "dualhex/checkers/compositional.hpp"
 #include "dualhex/checkers/compositional_boundary.hpp"
 #include "dualhex/checkers/compositional_weak.hpp"
+#include "dualhex/checkers/compositional_weak_stars.hpp"
 #include "dualhex/install/install.hpp"
 #include "dualhex/install/verify_installation.hpp"
 #include "dualhex/schemes/weak_rule.hpp"
@@ -96,7 +97,7 @@ CheckOutcome check_compositional_weak() {
                   std::to_string(r.nonconcave_ignored) + "/" + std::to_string(r.nonconcave_contexts) +
                   "; levels " + std::to_string(at.front()) + ".." + std::to_string(at.back()) +
                   " at one point, 8 orientations installed: " + std::to_string(spread_valid) + "/8 valid" +
-                  " (the window enumeration of weak balance is not done: proofs/README.md)";
+                  " (W7: the star enumeration is a separate run, its counts below; proofs/README.md)";
     std::ostringstream report;
     report << "  elements over the visible domain:";
     for (const auto& [name, n] : r.elements) report << ' ' << name << ' ' << n;
@@ -111,12 +112,30 @@ CheckOutcome check_compositional_weak() {
                << " application points\n";
     }
     if (!spread_failure.empty()) report << "  FAIL spread grid, " << spread_failure << '\n';
+    // W7, relevant bits only: what each context bit changes at each point of a leaf, and
+    // what the leaves at a vertex read jointly, per leaf configuration.
+    const WeakStarInfluence influence = weak_star_influence(WeakRule(), library);
+    report << "  W7 influence: " << influence.positions.size() << " vertex positions in a leaf, "
+           << influence.distinct_pieces << " distinct pieces, relevant bits per position:";
+    for (const auto& [k, n] : influence.relevant_histogram) report << ' ' << k << ':' << n;
+    report << '\n';
+    nlohmann::json stars = nlohmann::json::array();
+    for (const auto& w : weak_star_reads(influence)) {
+        const std::string g = std::to_string(w.parity[0]) + std::to_string(w.parity[1]) + std::to_string(w.parity[2]);
+        stars.push_back({{"g", g}, {"vertices", w.vertices}, {"configurations", w.configurations},
+                         {"max_free", w.max_free}, {"max_shared", w.max_shared}, {"joint", w.joint}});
+        report << "  W7 g=" << g << ": " << w.vertices << " candidate vertices, " << w.configurations
+               << " (vertex, leaf configuration) pairs, at most " << w.max_free << " free statuses read, "
+               << w.max_shared << " shared; joint assignments " << w.joint << '\n';
+    }
     out.details = {{"reach_octants", r.reach_octants}, {"lemma_contexts", r.lemma_contexts},
                    {"lemma_plain", r.lemma_plain}, {"visible_contexts", r.visible_contexts},
                    {"placed", r.placed}, {"plain", r.plain}, {"refused", r.refused},
                    {"nonconcave_contexts", r.nonconcave_contexts}, {"nonconcave_ignored", r.nonconcave_ignored},
                    {"mr_contexts", r.mr_contexts}, {"spread_levels", at}, {"spread_grids_valid", spread_valid},
-                   {"windows", windows}};
+                   {"windows", windows}, {"star_reads", stars},
+                   {"star_positions", influence.positions.size()}, {"star_pieces", influence.distinct_pieces},
+                   {"star_max_relevant", influence.max_relevant()}};
     out.report = report.str();
     return out;
 }
@@ -126,7 +145,7 @@ CheckOutcome check_compositional_weak() {
 void add_compositional_checks(CheckRegistry& registry) {
     registry.add({"proofs.weak_balance",
                   "weak balance: the weak rule's reach, lemma and visible domain; four levels at a point (tested); "
-                  "what a box window would read (the weak window enumeration is not done)",
+                  "what a box window would read; W7's influence table and what the leaves at a vertex read",
                   check_compositional_weak});
     registry.add({"proofs.compositional",
                   "every strongly balanced paired grid: the reduction lemma and every 2x2x2-leaf window (strong rule)",

@@ -15,6 +15,7 @@
 #include "dualhex/install/verify_installation.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/weak_rule.hpp"
+#include "test_wrong_rules.hpp"
 
 namespace dualhex {
 namespace {
@@ -171,29 +172,11 @@ TEST(WeakSpread, TheWeakRuleInstallsIt) {
         }
 }
 
-// A weak rule with one MR element mis-oriented (E-MR reflected across x = y after its
-// placement: its truncated edge and one interface swap axes; swapping its two interface axes
-// would be a symmetry of E-MR) or missing (VC3-MR refused) fails on that grid.
-class WeakMutant : public TransitionRule {
-public:
-    explicit WeakMutant(bool missing) : missing_(missing) {}
-    std::optional<Placement> place(const LeafContext& ctx) const override {
-        auto p = WeakRule().place(ctx);
-        if (!missing_ && p && p->element == "E-MR") p->symmetry = p->symmetry.compose(CubeSymmetry({1, 0, 2}, {1, 1, 1}));
-        if (missing_ && p && p->element == "VC3-MR") throw UnknownPatternError("no VC3-MR");
-        return p;
-    }
-    std::uint64_t reach() const override { return strong_reach(); }
-
-private:
-    bool missing_;
-};
-
 TEST(WeakSpread, WrongMrElementsAreCaughtThere) {
     const LeafGrid grid = spread_three_grid(2);
-    const InstallVerification v = verify_installation(install(grid, WeakMutant(false), library()));
+    const InstallVerification v = verify_installation(install(grid, test::WeakMutant(false), library()));
     EXPECT_FALSE(v.ok());
-    EXPECT_THROW((void)install(grid, WeakMutant(true), library()), InstallError);
+    EXPECT_THROW((void)install(grid, test::WeakMutant(true), library()), InstallError);
 }
 
 TEST(WeakWindows, WhatABoxWindowWouldRead) {

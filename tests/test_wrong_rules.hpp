@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "dualhex/schemes/signature_rule.hpp"
+#include "dualhex/schemes/weak_rule.hpp"
 
 namespace dualhex::test {
 
@@ -31,6 +32,26 @@ public:
 
 private:
     WrongChoiceMode mode_;
+};
+
+// A weak rule with one MR element mis-oriented (E-MR reflected across x = y after its
+// placement: its truncated edge and one interface swap axes; swapping its two interface axes
+// would be a symmetry of E-MR) or missing (VC3-MR refused): the spread grid's installation
+// (test_compositional_weak.cpp) and the star enumeration (test_compositional_weak_stars.cpp)
+// must see each.
+class WeakMutant : public TransitionRule {
+public:
+    explicit WeakMutant(bool missing) : missing_(missing) {}
+    std::optional<Placement> place(const LeafContext& ctx) const override {
+        auto p = WeakRule().place(ctx);
+        if (!missing_ && p && p->element == "E-MR") p->symmetry = p->symmetry.compose(CubeSymmetry({1, 0, 2}, {1, 1, 1}));
+        if (missing_ && p && p->element == "VC3-MR") throw UnknownPatternError("no VC3-MR");
+        return p;
+    }
+    std::uint64_t reach() const override { return strong_reach(); }
+
+private:
+    bool missing_;
 };
 
 }  // namespace dualhex::test
