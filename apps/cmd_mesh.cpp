@@ -245,6 +245,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"verify", r.ms.verify},
                       {"dual", r.ms.dual},
                       {"core", r.ms.core},
+                      {"refine", r.ms.refine},
                       {"pad", r.ms.pad},
                       {"features", r.ms.features},
                       {"smooth", r.ms.smooth},

@@ -40,7 +40,7 @@ void add_size_options(CLI::App& sub, MeshSizeCli& cli) {
     sub.add_option("--max-leaves", cli.max_leaves, "Refuse octrees beyond this many leaves (default 2000000)")
         ->group(g);
     sub.add_option("--refine-rounds", cli.refine_rounds,
-                   "Rounds of local refinement where the first core leaves the surface unresolved (default 1; 0: off)")
+                   "Rounds of local refinement where the first core leaves the surface unresolved (default 0: off)")
         ->group(g);
     sub.add_option("--refine-distance", cli.refine_distance,
                    "Refine where the padded core and the surface are farther apart than this many target sizes (default 0.5)")

@@ -159,6 +159,7 @@ TEST(RefineUnresolved, OffOrNothingUnresolvedGivesTheSameMesh) {
     MeshPipelineOptions on;
     on.size = 0.25;
     on.size_rel = 0;
+    on.refine_rounds = 2;
     MeshPipelineOptions off = on;
     off.refine_rounds = 0;
     const MeshPipelineResult a = mesh_surface(tree, on), b = mesh_surface(tree, off);
@@ -172,6 +173,7 @@ TEST(RefineUnresolved, OffOrNothingUnresolvedGivesTheSameMesh) {
 
 TEST(RefineUnresolved, OptionsChecked) {
     MeshSizeOptions o;
+    EXPECT_EQ(o.refine_rounds, 0);  // off by default (mesher/README.md, "refine")
     o.refine_rounds = -1;
     EXPECT_THROW(check_size_options(o), std::invalid_argument);
     o.refine_rounds = kMaxRefineRounds + 1;

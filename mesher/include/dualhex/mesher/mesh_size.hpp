@@ -51,7 +51,7 @@ struct MeshSizeOptions {
     double curvature_angle = 40;
     int curvature_levels = 1;
     std::size_t max_leaves = 2'000'000;  ///< about 2.5 GB through the pipeline
-    int refine_rounds = 1;
+    int refine_rounds = 0;  // off by default: see mesher/README.md, "refine"
     double refine_distance = 0.5;
 };
 
