@@ -39,6 +39,12 @@ void add_size_options(CLI::App& sub, MeshSizeCli& cli) {
         ->group(g);
     sub.add_option("--max-leaves", cli.max_leaves, "Refuse octrees beyond this many leaves (default 2000000)")
         ->group(g);
+    sub.add_option("--refine-rounds", cli.refine_rounds,
+                   "Rounds of local refinement where the first core leaves the surface unresolved (default 0: off)")
+        ->group(g);
+    sub.add_option("--refine-distance", cli.refine_distance,
+                   "Refine where the padded core and the surface are farther apart than this many target sizes (default 0.5)")
+        ->group(g);
 }
 
 mesher::MeshSizeOptions resolve_size_options(const MeshSizeCli& cli) {
@@ -60,6 +66,8 @@ mesher::MeshSizeOptions resolve_size_options(const MeshSizeCli& cli) {
     if (cli.min_depth) s.min_depth = *cli.min_depth;
     if (cli.max_depth) s.max_depth = *cli.max_depth;
     if (cli.max_leaves) s.max_leaves = *cli.max_leaves;
+    if (cli.refine_rounds) s.refine_rounds = *cli.refine_rounds;
+    if (cli.refine_distance) s.refine_distance = *cli.refine_distance;
     try {
         mesher::check_size_options(s);
     } catch (const std::invalid_argument& e) {

@@ -19,6 +19,8 @@ struct MeshSizeCli {
     std::optional<double> size, size_rel, surface_band, thickness_factor, curvature_angle;
     std::optional<int> min_depth, max_depth, curvature_levels, thickness_levels;
     std::optional<std::size_t> max_leaves;
+    std::optional<int> refine_rounds;
+    std::optional<double> refine_distance;
 };
 
 /// Adds the options (group "Size") to the mesh subcommand.

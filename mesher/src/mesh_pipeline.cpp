@@ -15,6 +15,7 @@
 #include "dualhex/mesher/feature_patches.hpp"
 #include "dualhex/mesher/feature_refusal.hpp"
 #include "dualhex/mesher/install_stage.hpp"
+#include "dualhex/mesher/refine_unresolved.hpp"
 #include "dualhex/mesher/select_core.hpp"
 #include "dualhex/mesher/smooth.hpp"
 #include "dualhex/mesher/surface_smooth.hpp"
@@ -30,8 +31,8 @@ constexpr double kFarSurfaceDistance = 0.006;
 
 // The stages in run order: progress reports stage i as i of their number done (a stage
 // missing here reports all done: add new stages to the list).
-constexpr std::array<std::string_view, 13> kStages{"octree", "balance", "pair",     "install",  "verify", "dual",  "core",
-                                                   "pad",    "features", "smooth", "optimise", "check",  "report"};
+constexpr std::array<std::string_view, 14> kStages{"octree", "balance",  "pair",   "install",  "verify", "dual",   "core",
+                                                   "refine", "pad",      "features", "smooth", "optimise", "check", "report"};
 
 // Runs one named stage: reports its name, times it into `ms`, returns what it returns.
 template <class Stage>
@@ -44,7 +45,7 @@ auto timed(const MeshPipelineOptions& options, std::string_view name, double& ms
     struct Stop {
         Clock::time_point t0;
         double& ms;
-        ~Stop() { ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+        ~Stop() { ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }  // summed over rounds
     } stop{t0, ms};
     return stage();
 }
@@ -96,6 +97,18 @@ std::vector<int> padded_levels(const HexMesh& padded, std::size_t core_hexes, co
     return out;
 }
 
+// Stages "balance" and "pair": the least paired and balanced refinement of the octree.
+LeafGrid grid_stages(const MeshPipelineOptions& options, const LeafGrid& octree, MeshTimes& ms) {
+    const LeafGrid balanced = timed(options, "balance", ms.balance, [&] { return balance(octree, options.balance); });
+    LeafGrid grid = timed(options, "pair", ms.pair, [&] { return pair(balanced, options.balance); });
+    ms.balance_pair = ms.balance + ms.pair;
+    if (grid.size() > options.max_leaves)  // pairing and balance grade the octree: bounded, but check
+        throw geometry::OctreeTooLarge("paired grid: " + std::to_string(grid.size()) + " leaves, more than the limit " +
+                                           std::to_string(options.max_leaves),
+                                       grid.size());
+    return grid;
+}
+
 // Stage "core": the dual embedded, the core chosen and its interior valences counted.
 CoreSelection core_stage(const ClippedDual& dual, const InstallResult& installed, const RootCube& root,
                          const AabbTree& tree, const CoreOptions& options) {
@@ -105,10 +118,15 @@ CoreSelection core_stage(const ClippedDual& dual, const InstallResult& installed
     return core;
 }
 
+// The pad stage's work on `core`: its boundary smoothed (if asked), then padded.
+PadResult pad_core(HexMesh core, const AabbTree& tree, const PadOptions& options) {
+    (void)smooth_core_boundary(core, options.core_smoothing, options.core_smoothing_floor);
+    return pad_layer(core, tree, options);
+}
+
 // Stage "pad": result.core.mesh padded into result.mesh, with its roles and figures.
 void pad_stage(MeshPipelineResult& result, const AabbTree& tree, const PadOptions& options) {
-    (void)smooth_core_boundary(result.core.mesh, options.core_smoothing, options.core_smoothing_floor);
-    PadResult padded = pad_layer(result.core.mesh, tree, options);
+    PadResult padded = pad_core(std::move(result.core.mesh), tree, options);
     result.core.mesh = {};
     result.mesh = std::move(padded.mesh);
     result.constraints = std::move(padded.constraints);
@@ -117,6 +135,25 @@ void pad_stage(MeshPipelineResult& result, const AabbTree& tree, const PadOption
     result.padded_by_ray = padded.by_ray;
     result.padded_by_closest_point = padded.by_closest_point;
     result.padded_switched = padded.switched;
+}
+
+// Stage "refine": the octree split around the places the core leaves unresolved (those
+// where the mesh it pads to is far from the surface); false when there is none, nothing
+// was split or the split octree would exceed max_leaves (then the octree and the core stay
+// as they are).
+bool refine_stage(MeshPipelineResult& result, LeafGrid& octree, const AabbTree& tree,
+                  const MeshPipelineOptions& options) {
+    const double far = options.refine_distance * result.target_size;
+    const HexMesh padded = result.core.mesh.hexes.empty() ? HexMesh{} : pad_core(result.core.mesh, tree, options.pad).mesh;
+    const std::vector<UnresolvedPlace> places = unresolved_places(padded, tree, far);
+    result.refine.places.push_back(places.size());
+    if (places.empty()) return false;
+    LocalRefinement refined = refine_at_places(octree, result.root, places, options.max_depth, far);
+    if (refined.split == 0 || refined.grid.size() > options.max_leaves) return false;
+    octree = std::move(refined.grid);
+    result.refine.split += refined.split;
+    ++result.refine.rounds;
+    return true;
 }
 
 // Stage "smooth": surface vertices along the surface, then the interior Laplacian.
@@ -140,27 +177,31 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     result.root = octree.root;
     result.target_size = octree_options.surface_size;
     result.size_level = octree.size_level;
-    result.octree_depth = octree.grid.max_level();
     result.curvature_splits = octree.curvature_splits;
-    const LeafGrid balanced = timed(options, "balance", ms.balance, [&] { return balance(octree.grid, options.balance); });
-    const LeafGrid grid = timed(options, "pair", ms.pair, [&] { return pair(balanced, options.balance); });
-    ms.balance_pair = ms.balance + ms.pair;
-    result.leaves = grid.size();
-    if (grid.size() > options.max_leaves)  // pairing and balance grade the octree: bounded, but check
-        throw geometry::OctreeTooLarge("paired grid: " + std::to_string(grid.size()) + " leaves, more than the limit " +
-                                           std::to_string(options.max_leaves),
-                                       grid.size());
-
-    const InstallResult installed =
-        timed(options, "install", ms.install, [&] { return install_schemes(grid, options.balance); });
-    result.cells = installed.complex.n_cells();
-    (void)timed(options, "verify", ms.verify, [&] { return require_verified(installed); });
-    const ClippedDual dual = timed(options, "dual", ms.dual, [&] { return root_clipped_dual(installed); });
+    // Stages balance .. core on the octree; then "refine" splits it where the core leaves the
+    // surface unresolved and they run again (at most refine_rounds times).
+    LeafGrid octree_grid = std::move(octree.grid);
+    LeafGrid grid;
+    InstallResult installed;
+    ClippedDual dual;
+    for (int round = 0;; ++round) {
+        grid = grid_stages(options, octree_grid, ms);
+        result.leaves = grid.size();
+        installed = timed(options, "install", ms.install, [&] { return install_schemes(grid, options.balance); });
+        result.cells = installed.complex.n_cells();
+        (void)timed(options, "verify", ms.verify, [&] { return require_verified(installed); });
+        dual = timed(options, "dual", ms.dual, [&] { return root_clipped_dual(installed); });
+        result.core = timed(options, "core", ms.core,
+                            [&] { return core_stage(dual, installed, octree.root, tree, options.core); });
+        if (round == options.refine_rounds) break;
+        const bool again = timed(options, "refine", ms.refine, [&] {
+            return refine_stage(result, octree_grid, tree, options);
+        });
+        if (!again) break;
+    }
+    result.octree_depth = octree_grid.max_level();
     result.dual_hexes = dual.hexes.size();
     result.dual_edge_valences = clipped_dual_edge_valences(dual);
-
-    result.core = timed(options, "core", ms.core,
-                        [&] { return core_stage(dual, installed, octree.root, tree, options.core); });
     if (result.core.mesh.hexes.empty())
         throw EmptyCoreError("the core is empty: no dual hex lies well inside the surface (max depth too small?)");
     result.core_hexes = result.core.mesh.hexes.size();

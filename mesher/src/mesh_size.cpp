@@ -43,6 +43,10 @@ void check_size_options(const MeshSizeOptions& o) {
         refuse("min depth must be in [0, max depth " + std::to_string(o.max_depth) + "], got " +
                std::to_string(o.min_depth));
     if (o.max_leaves == 0) refuse("max leaves must be > 0");
+    if (o.refine_rounds < 0 || o.refine_rounds > kMaxRefineRounds)
+        refuse("refine rounds must be in [0, " + std::to_string(kMaxRefineRounds) + "], got " +
+               std::to_string(o.refine_rounds));
+    if (!(o.refine_distance > 0)) refuse("refine distance must be > 0, got " + std::to_string(o.refine_distance));
 }
 
 double target_size(const MeshSizeOptions& o, const Eigen::AlignedBox3d& bbox) {

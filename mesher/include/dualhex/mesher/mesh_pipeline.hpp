@@ -10,6 +10,8 @@
 //   verify     install_stage.hpp require_verified     must pass (a bug otherwise)
 //   dual       install_stage.hpp root_clipped_dual    -> clipped dual, one hex per primal vertex (exact)
 //   core       select_core.hpp select_core            -> dual hexes well inside, manifold-repaired, components
+//   refine     refine_unresolved.hpp                  octree split where the core is far from the surface, then
+//                                                     balance .. core again (at most refine_rounds rounds)
 //   pad        pad.hpp pad_layer                      -> core + one hex layer whose outer vertices are on the surface
 //   features   features.hpp snap_features             boundary vertices and edge chains -> input corners and curves,
 //              feature_patches.hpp project_to_patches  then the vertices beside them onto their side's patch,
@@ -97,7 +99,7 @@ struct MeshPipelineOptions : MeshSizeOptions {
 /// Milliseconds per stage. balance_pair = balance + pair: the balanced grid first, then the
 /// least paired and balanced refinement of it (the same grid as pairing the octree directly).
 struct MeshTimes {
-    double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, core = 0, pad = 0,
+    double octree = 0, balance = 0, pair = 0, balance_pair = 0, install = 0, verify = 0, dual = 0, core = 0, refine = 0, pad = 0,
            features = 0, smooth = 0, optimise = 0, check = 0, report = 0, write = 0;
 };
 
@@ -115,6 +117,13 @@ struct MeshPipelineResult {
     std::size_t dual_hexes = 0;           ///< hexes of the clipped dual (whole root cube)
     std::map<int, std::size_t> dual_edge_valences;  ///< of the whole clipped dual
     CoreSelection core;                   ///< the core stage's figures (core.mesh is moved into mesh)
+    /// The refine stage (refine_unresolved.hpp): unresolved places found after each core
+    /// selection it ran on, rounds that split the octree, leaves split in all.
+    struct Refine {
+        std::vector<std::size_t> places;
+        int rounds = 0;
+        std::size_t split = 0;
+    } refine;
     std::size_t core_hexes = 0, pad_hexes = 0;
     std::size_t boundary_vertices = 0;    ///< on the surface (the pad's outer vertices)
     std::size_t padded_by_ray = 0, padded_by_closest_point = 0, padded_switched = 0;

@@ -13,6 +13,9 @@
 //   curvature_angle   max normal spread over a crossing cell, degrees (0: off)
 //   curvature_levels  curvature refines at most this many levels below the target's level
 //   max_leaves      refuse (OctreeTooLarge) an octree estimated or grown beyond this
+//   refine_rounds   rounds of the refine stage (refine_unresolved.hpp; 0: off)
+//   refine_distance where the mesh padded from the core and the input are farther apart
+//                   than this * (target edge), the octree is split within that distance
 //
 // Presets, tuned on gao_bunny_tri.off to about 5k, 20k and 100k hexes (measured: 5,389,
 // 24,835, 106,767; all 15 shared models in README, `dualhex mesh`): coarse (size_rel 0.04,
@@ -32,6 +35,9 @@ namespace dualhex::mesher {
 /// from overflow); the installation verifies at these depths (tested at 15 and up).
 inline constexpr int kMaxMeshDepth = 16;
 
+/// Most rounds of the refine stage (each splits the leaves around unresolved places once).
+inline constexpr int kMaxRefineRounds = 8;
+
 enum class MeshPreset { Coarse, Medium, Fine };
 
 struct MeshSizeOptions {
@@ -45,6 +51,8 @@ struct MeshSizeOptions {
     double curvature_angle = 40;
     int curvature_levels = 1;
     std::size_t max_leaves = 2'000'000;  ///< about 2.5 GB through the pipeline
+    int refine_rounds = 0;  // off by default: see mesher/README.md, "refine"
+    double refine_distance = 0.5;
 };
 
 /// The preset's values (medium == MeshSizeOptions{}).
@@ -54,7 +62,7 @@ struct MeshSizeOptions {
 
 /// Throws std::invalid_argument naming the option: negative size/size_rel/band/factor/angle
 /// or levels, an angle above 180, both size and size_rel zero, depths outside [0, kMaxMeshDepth] (max >= 1),
-/// min_depth > max_depth, max_leaves 0.
+/// min_depth > max_depth, max_leaves 0, refine_rounds outside [0, 8], refine_distance <= 0.
 void check_size_options(const MeshSizeOptions& size);
 
 /// The target edge at the surface in model units: size, else size_rel * bbox diagonal.
