@@ -39,3 +39,5 @@ dualhex_add_test(test_mesher_feature_refusal SOURCES test_mesher_feature_refusal
 dualhex_add_test(test_mesher_budget SOURCES test_mesher_budget.cpp DEPS dualhex::mesher TBB::tbb)
 dualhex_add_test(test_mesher_core_topology SOURCES test_mesher_core_topology.cpp DEPS dualhex::mesher)
 dualhex_add_test(test_mesher_core_fill SOURCES test_mesher_core_fill.cpp DEPS dualhex::mesher)
+# the core cleanup before the pad (mesher/core_cleanup.hpp)
+dualhex_add_test(test_mesher_core_cleanup SOURCES test_mesher_core_cleanup.cpp DEPS dualhex::mesher)
