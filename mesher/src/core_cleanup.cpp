@@ -59,7 +59,7 @@ bool exposed_faces(unsigned other) {
 }
 
 CoreCleanup clean_core(const std::vector<std::array<int, 8>>& cells, std::size_t vertex_count, const std::vector<char>& in,
-                       const std::vector<char>& addable) {
+                       const std::vector<char>& flippable) {
     const std::vector<std::array<int, 6>> across = face_neighbours(cells);
     SelectionFlips flips(cells, vertex_count, in);
     std::vector<char> flipped(cells.size(), 0);
@@ -68,7 +68,7 @@ CoreCleanup clean_core(const std::vector<std::array<int, 8>>& cells, std::size_t
     // thick from its rim down to one hex.
     std::vector<char> candidate(cells.size(), 0);
     for (std::size_t h = 0; h < cells.size(); ++h)
-        candidate[h] = (in[h] || addable[h]) && exposed_faces(other_side_faces(across[h], in, h));
+        candidate[h] = flippable[h] && exposed_faces(other_side_faces(across[h], in, h));
     CoreCleanup out;
     // Each sweep fills notches first, then removes what still sticks out: a hex beside a
     // notch is not removed as a one-hex wall when the notch can be filled.
@@ -78,7 +78,7 @@ CoreCleanup clean_core(const std::vector<std::array<int, 8>>& cells, std::size_t
         for (const bool adding : {true, false})
             for (std::size_t h = 0; h < cells.size(); ++h) {
                 const bool core = flips.in()[h] != 0;
-                if (flipped[h] || core == adding || (adding && !addable[h])) continue;
+                if (flipped[h] || core == adding || !flippable[h]) continue;
                 const unsigned other = other_side_faces(across[h], flips.in(), h);
                 if (!exposed_faces(other) || !(candidate[h] || __builtin_popcount(other) >= 5)) continue;
                 if (!flips.simple(static_cast<int>(h))) continue;
@@ -89,9 +89,8 @@ CoreCleanup clean_core(const std::vector<std::array<int, 8>>& cells, std::size_t
             }
     }
     for (std::size_t h = 0; h < cells.size(); ++h) {
-        const bool core = flips.in()[h] != 0;
         const unsigned other = other_side_faces(across[h], flips.in(), h);
-        if (!flipped[h] && (core || addable[h]) && exposed_faces(other) && (candidate[h] || __builtin_popcount(other) >= 5))
+        if (!flipped[h] && flippable[h] && exposed_faces(other) && (candidate[h] || __builtin_popcount(other) >= 5))
             ++out.refused;
     }
     out.in = flips.in();

@@ -266,20 +266,22 @@ namespace {
 // The dual's hexes as int cells, and per hex its least corner signed distance and mean edge.
 struct DualCells {
     std::vector<std::array<int, 8>> cells;
-    std::vector<double> depth, edge;
+    std::vector<double> depth, top, edge;  // least and largest corner signed distance, mean edge
 };
 
 DualCells dual_cells(const ClippedDual& dual, const EmbeddedDual& embedded) {
     DualCells d;
     for (const auto& hex : dual.hexes) {
         std::array<int, 8> c{};
-        double depth = INFINITY;
+        double depth = INFINITY, top = -INFINITY;
         for (std::size_t i = 0; i < 8; ++i) {
             c[i] = static_cast<int>(hex[i]);
             depth = std::min(depth, embedded.signed_distance[hex[i]]);
+            top = std::max(top, embedded.signed_distance[hex[i]]);
         }
         d.cells.push_back(c);
         d.depth.push_back(depth);
+        d.top.push_back(top);
         d.edge.push_back(mean_edge(hex, embedded.points));
     }
     return d;
@@ -303,10 +305,12 @@ void clean_core_selection(const ClippedDual& dual, const EmbeddedDual& embedded,
     if (core.mesh.hexes.empty()) return;
     const DualCells d = dual_cells(dual, embedded);
     const std::size_t m = d.cells.size();
-    std::vector<char> in(m, 0), addable(m, 0);
+    std::vector<char> in(m, 0), flippable(m, 0);
     for (std::uint32_t h : core.dual_hex) in[h] = 1;
-    for (std::size_t h = 0; h < m; ++h) addable[h] = !in[h] && d.depth[h] - options.cleanup_margin * d.edge[h] > 0;
-    const CoreCleanup cleaned = clean_core(d.cells, embedded.points.size(), in, addable);
+    for (std::size_t h = 0; h < m; ++h)
+        flippable[h] = in[h] ? d.top[h] < options.cleanup_remove_depth * d.edge[h]
+                             : d.depth[h] - options.cleanup_margin * d.edge[h] > 0;
+    const CoreCleanup cleaned = clean_core(d.cells, embedded.points.size(), in, flippable);
     core.cleanup_removed = cleaned.removed;
     core.cleanup_added = cleaned.added;
     core.cleanup_refused = cleaned.refused;

@@ -4,16 +4,17 @@
 // grooves one hex wide (mesher/README.md, "Core cleanup").
 //
 // Input : cells (M, 8) VTK hexes of a conforming mesh (vertex ids; for the pipeline the whole
-//         clipped dual), the selection `in` (M flags, the core), `addable` (M flags: hexes
-//         deep enough inside the surface to join the core).
+//         clipped dual), the selection `in` (M flags, the core), `flippable` (M flags: core
+//         hexes that may leave, other hexes that may join: for the pipeline, those deep
+//         enough inside the surface, select_core.hpp clean_core_selection).
 // Output: CoreCleanup — the cleaned selection and what changed.
 //
 // A hex is exposed when, of its 6 faces, the ones on the other side (for a core hex: faces
 // on the core boundary; for a hex outside the core: faces shared with the core) are 4 or
 // more, or 3 with two opposite ones among them (a ridge or a groove one hex wide). The
 // three-face corner (three mutually adjacent faces) is the staircase's ordinary convex or
-// concave corner and stays. An exposed core hex leaves the core, an exposed addable hex
-// outside joins it, each only if the flip is simple (core_topology.hpp SelectionFlips:
+// concave corner and stays. An exposed flippable core hex leaves the core, an exposed
+// flippable hex outside joins it, each only if the flip is simple (core_topology.hpp SelectionFlips:
 // the hex meets the other side in a closed disk of its faces), so components, Euler
 // characteristics and manifoldness of the core boundary are unchanged; an exposed hex whose
 // flip is not simple is refused (counted). Only hexes exposed in the given selection are
@@ -38,7 +39,7 @@ struct CoreCleanup {
 };
 
 [[nodiscard]] CoreCleanup clean_core(const std::vector<std::array<int, 8>>& cells, std::size_t vertex_count,
-                                     const std::vector<char>& in, const std::vector<char>& addable);
+                                     const std::vector<char>& in, const std::vector<char>& flippable);
 
 /// Whether a hex with `other` (bit f: face f in geometry::kHexFaces order lies on the other
 /// side) is exposed, as defined above.

@@ -1,6 +1,7 @@
 #pragma once
 // The select-core stage's options and result (select_core.hpp), without the clipped dual's
 // headers, so that the pipeline's header can carry them.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -16,10 +17,14 @@ struct CoreOptions {
     /// Fill hexes (grown through to close tunnels and join thin parts, core_topology.hpp):
     /// all corners at >= fill_margin * (mean edge) inside the surface; < 0: no fill.
     double fill_margin = 0.02;
-    /// Core cleanup before the pad (core_cleanup.hpp): exposed core hexes removed, notches
-    /// filled with hexes whose corners are at >= cleanup_margin * (mean edge) inside.
+    /// Core cleanup before the pad (core_cleanup.hpp): notches filled with hexes whose
+    /// corners are at >= cleanup_margin * (mean edge) inside; exposed core hexes whose
+    /// deepest corner is < cleanup_remove_depth * (mean edge) inside removed. Removal is off
+    /// by default (0): it halves the inverted pad hexes right after the pad but leaves more
+    /// flat hexes and hexes below 0.5 at the end on the CAD models (mesher/README.md).
     bool cleanup = true;
     double cleanup_margin = 0.05;
+    double cleanup_remove_depth = 0;
 };
 
 /// What the core stage decided about one dual hex (for the distance diagnostic).
