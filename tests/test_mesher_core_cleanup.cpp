@@ -1,13 +1,19 @@
 // The core cleanup before the pad (mesher/core_cleanup.hpp) on hand-made selections of a
 // block of unit hexes: spikes, ridges and notches one hex wide are cleaned, flips that would
-// change the topology (a ring's hexes, its hole) are refused, the result is a fixed point.
+// change the topology (a ring's hexes, its hole) are refused, the result is a fixed point;
+// and in the pipeline on the default torus.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 
+#include "dualhex/geometry/aabb_tree.hpp"
 #include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/mesher/core_cleanup.hpp"
 #include "dualhex/mesher/core_topology.hpp"
+#include "dualhex/mesher/default_shape.hpp"
+#include "dualhex/mesher/mesh_pipeline.hpp"
 #include "test_geometry_hex_block.hpp"
 
 using namespace dualhex;
@@ -109,16 +115,15 @@ TEST(CoreCleanup, StaircaseIsCleaned) {
     EXPECT_EQ(mesher::clean_core(cells_of(b.mesh), b.mesh.points.size(), in, all).in, c.in);
 }
 
-// Only addable hexes join: without them the notch in a 5 x 5 x 2 box stays (its neighbours
-// have 2 faces out, not exposed).
+// Only flippable hexes flip: with only the core's own hexes flippable (may leave, none may
+// join) the notch in a 5 x 5 x 2 box stays (its neighbours have 2 faces out, not exposed).
 TEST(CoreCleanup, NotchNotAddableStays) {
     const HexBlock b = hex_block(7, 7, 4);
     const std::vector<char> in = picked(b, [](int i, int j, int k) {
         return i >= 1 && i <= 5 && j >= 1 && j <= 5 && k >= 1 && k <= 2 && !(i == 3 && j == 3 && k == 2);
     });
-    const std::vector<char> none(in.size(), 0);
-    const mesher::CoreCleanup c = mesher::clean_core(cells_of(b.mesh), b.mesh.points.size(), in, none);
-    EXPECT_EQ(c.added, 0u);
+    const mesher::CoreCleanup c = mesher::clean_core(cells_of(b.mesh), b.mesh.points.size(), in, in);
+    EXPECT_EQ(c.added + c.removed, 0u);
     EXPECT_EQ(c.in, in);
     // In a 3 x 3 x 2 box the notch's four neighbours are walls one hex wide (U): without
     // the notch filled they go, and then the top corners they leave as spikes (5 faces out);
@@ -128,12 +133,15 @@ TEST(CoreCleanup, NotchNotAddableStays) {
     const std::vector<char> small = picked(s, [](int i, int j, int k) {
         return i >= 1 && i <= 3 && j >= 1 && j <= 3 && k >= 1 && k <= 2 && !(i == 2 && j == 2 && k == 2);
     });
-    const mesher::CoreCleanup e = mesher::clean_core(cells_of(s.mesh), s.mesh.points.size(), small,
-                                                     std::vector<char>(small.size(), 0));
+    const mesher::CoreCleanup e = mesher::clean_core(cells_of(s.mesh), s.mesh.points.size(), small, small);
     EXPECT_EQ(e.removed, 8u);
     EXPECT_EQ(e.in, picked(s, [](int i, int j, int k) { return i >= 1 && i <= 3 && j >= 1 && j <= 3 && k == 1; }));
     EXPECT_EQ(boundary_of(s, e.in).chi, (std::vector<std::int64_t>{2}));
-    // With the notch addable it is filled instead and nothing is removed.
+    // With nothing flippable nothing changes; with every hex flippable the notch is filled
+    // instead and nothing is removed.
+    const mesher::CoreCleanup none = mesher::clean_core(cells_of(s.mesh), s.mesh.points.size(), small,
+                                                        std::vector<char>(small.size(), 0));
+    EXPECT_EQ(none.in, small);
     const mesher::CoreCleanup f = mesher::clean_core(cells_of(s.mesh), s.mesh.points.size(), small,
                                                      std::vector<char>(small.size(), 1));
     EXPECT_EQ(f.added, 1u);
@@ -172,4 +180,28 @@ TEST(CoreCleanup, SelectionFlips) {
     EXPECT_TRUE(flips.in()[static_cast<std::size_t>(b.cell(1, 1, 2))]);
     EXPECT_TRUE(flips.simple(b.cell(1, 1, 2)));  // and may leave again
     EXPECT_FALSE(flips.simple(b.cell(1, 1, 1)));  // still: the hole touches it along an edge
+}
+
+// In the pipeline (select_core.hpp clean_core_selection) on the default torus (chi 0): with
+// removal on, the core differs from the uncleaned one by exactly the flips counted, the
+// fates name them, and the output's topology still matches the input's.
+TEST(CoreCleanup, PipelineKeepsTheTorus) {
+    const geometry::AabbTree tree(mesher::default_shape());
+    mesher::MeshPipelineOptions options;
+    options.max_depth = 5;
+    options.core.cleanup = false;
+    const mesher::MeshPipelineResult off = mesher::mesh_surface(tree, options);
+    options.core.cleanup = true;
+    options.core.cleanup_remove_depth = INFINITY;
+    const mesher::MeshPipelineResult on = mesher::mesh_surface(tree, options);
+    EXPECT_EQ(off.core.cleanup_removed + off.core.cleanup_added, 0u);
+    EXPECT_GT(on.core.cleanup_removed + on.core.cleanup_added, 0u);
+    EXPECT_FALSE(on.core.cleanup_reverted);
+    EXPECT_EQ(on.core_hexes + on.core.cleanup_removed, off.core_hexes + on.core.cleanup_added);
+    EXPECT_EQ(static_cast<std::size_t>(std::count(on.core.fate.begin(), on.core.fate.end(), mesher::CoreFate::CleanedOut)),
+              on.core.cleanup_removed);
+    EXPECT_EQ(static_cast<std::size_t>(std::count(on.core.fate.begin(), on.core.fate.end(), mesher::CoreFate::CleanedIn)),
+              on.core.cleanup_added);
+    EXPECT_TRUE(on.topology.matches);
+    EXPECT_EQ(on.topology.euler, (std::vector<std::int64_t>{0}));
 }
