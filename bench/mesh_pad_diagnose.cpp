@@ -5,7 +5,7 @@
 //   mesh_pad_diagnose MODEL [--preset coarse|medium|fine] [--threshold 0.3]
 //                     [--core-smoothing N] [--core-floor F] [--normal-smoothing N]  (pad.hpp options)
 //                     [--rescue N]  (optimise.hpp rescue_rounds)
-//                     [--no-cleanup] [--cleanup-margin F] [--cleanup-remove-depth F]  (core_cleanup.hpp, CoreOptions)
+//                     [--cleanup | --no-cleanup] [--cleanup-margin F] [--cleanup-remove-depth F]  (core_cleanup.hpp, CoreOptions)
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
         else if (arg == "--core-floor" && a + 1 < argc) options.pad.core_smoothing_floor = std::stod(argv[++a]);
         else if (arg == "--normal-smoothing" && a + 1 < argc) options.pad.normal_smoothing = std::stoi(argv[++a]);
         else if (arg == "--no-cleanup") options.core.cleanup = false;
+        else if (arg == "--cleanup") options.core.cleanup = true;
         else if (arg == "--cleanup-margin" && a + 1 < argc) options.core.cleanup_margin = std::stod(argv[++a]);
         else if (arg == "--cleanup-remove-depth" && a + 1 < argc) options.core.cleanup_remove_depth = std::stod(argv[++a]);
         else if (arg == "--rescue" && a + 1 < argc) options.optimise.rescue_rounds = std::stoi(argv[++a]);
