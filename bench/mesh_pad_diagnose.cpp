@@ -5,6 +5,7 @@
 //   mesh_pad_diagnose MODEL [--preset coarse|medium|fine] [--threshold 0.3]
 //                     [--core-smoothing N] [--core-floor F] [--normal-smoothing N]  (pad.hpp options)
 //                     [--rescue N]  (optimise.hpp rescue_rounds)
+//                     [--cleanup | --no-cleanup] [--cleanup-margin F] [--cleanup-remove-depth F]  (core_cleanup.hpp, CoreOptions)
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -28,6 +29,10 @@ int main(int argc, char** argv) {
         else if (arg == "--core-smoothing" && a + 1 < argc) options.pad.core_smoothing = std::stoi(argv[++a]);
         else if (arg == "--core-floor" && a + 1 < argc) options.pad.core_smoothing_floor = std::stod(argv[++a]);
         else if (arg == "--normal-smoothing" && a + 1 < argc) options.pad.normal_smoothing = std::stoi(argv[++a]);
+        else if (arg == "--no-cleanup") options.core.cleanup = false;
+        else if (arg == "--cleanup") options.core.cleanup = true;
+        else if (arg == "--cleanup-margin" && a + 1 < argc) options.core.cleanup_margin = std::stod(argv[++a]);
+        else if (arg == "--cleanup-remove-depth" && a + 1 < argc) options.core.cleanup_remove_depth = std::stod(argv[++a]);
         else if (arg == "--rescue" && a + 1 < argc) options.optimise.rescue_rounds = std::stoi(argv[++a]);
         else model = arg;
     }
@@ -50,6 +55,9 @@ int main(int argc, char** argv) {
         const MeshPipelineResult r = mesh_surface(tree, options);
         std::printf("hexes %zu (core %zu, pad %zu), optimise work %zu of %zu\n", r.mesh.hexes.size(), r.core_hexes,
                     r.pad_hexes, r.optimise.work, r.optimise.work_budget);
+        std::printf("core cleanup: %zu removed, %zu added, %zu refused, %zu sweeps%s; topology %s\n", r.core.cleanup_removed,
+                    r.core.cleanup_added, r.core.cleanup_refused, r.core.cleanup_sweeps,
+                    r.core.cleanup_reverted ? " (reverted)" : "", r.topology.matches ? "matches the input" : "differs");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "mesh_pad_diagnose: %s: %s\n", model.c_str(), e.what());
         return 1;

@@ -41,3 +41,5 @@ dualhex_add_test(test_mesher_core_topology SOURCES test_mesher_core_topology.cpp
 dualhex_add_test(test_mesher_core_fill SOURCES test_mesher_core_fill.cpp DEPS dualhex::mesher)
 # the refine stage: unresolved places, local octree splits, a slab thinner than its cells
 dualhex_add_test(test_mesher_refine SOURCES test_mesher_refine.cpp DEPS dualhex::mesher)
+# the core cleanup before the pad (mesher/core_cleanup.hpp)
+dualhex_add_test(test_mesher_core_cleanup SOURCES test_mesher_core_cleanup.cpp DEPS dualhex::mesher)

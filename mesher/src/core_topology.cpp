@@ -235,4 +235,28 @@ std::vector<char> grow_core_with_topology(const std::vector<std::array<int, 8>>&
     return g.in;
 }
 
+struct SelectionFlips::Impl {
+    std::vector<std::array<int, 8>> cells;  // owned: the grower refers to it
+    Grower grower;
+    Impl(const std::vector<std::array<int, 8>>& c, std::size_t vertex_count, std::vector<char> in)
+        : cells(c), grower{cells, HexesAt(cells, vertex_count), std::move(in)} {}
+};
+
+SelectionFlips::SelectionFlips(const std::vector<std::array<int, 8>>& cells, std::size_t vertex_count, std::vector<char> in)
+    : impl_(std::make_unique<Impl>(cells, vertex_count, std::move(in))) {}
+
+SelectionFlips::~SelectionFlips() = default;
+
+bool SelectionFlips::simple(int c) const {
+    const Grower& g = impl_->grower;
+    return g.attach(c, g.in[static_cast<std::size_t>(c)] ? 0 : 1) == Attach::Simple;
+}
+
+void SelectionFlips::flip(int c) {
+    char& f = impl_->grower.in[static_cast<std::size_t>(c)];
+    f = f ? 0 : 1;
+}
+
+const std::vector<char>& SelectionFlips::in() const { return impl_->grower.in; }
+
 }  // namespace dualhex::mesher

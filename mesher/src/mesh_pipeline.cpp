@@ -114,6 +114,7 @@ CoreSelection core_stage(const ClippedDual& dual, const InstallResult& installed
                          const AabbTree& tree, const CoreOptions& options) {
     const EmbeddedDual embedded = embed_dual(dual, root_extent(installed), root, tree);
     CoreSelection core = select_core(dual, embedded, geometry::surface_topology(tree.surface()), options, true);
+    if (options.cleanup) clean_core_selection(dual, embedded, options, core);  // before the pad: core_cleanup.hpp
     core.singular_edge_valences = interior_singular_edge_valences(core.mesh);
     return core;
 }

@@ -31,7 +31,7 @@ namespace {
 CoreFate cause_of(const std::array<std::size_t, kCoreFates>& fates) {
     CoreFate best = CoreFate::Core;
     std::size_t most = 0;
-    for (CoreFate f : {CoreFate::Cut, CoreFate::DroppedPart, CoreFate::RepairOut, CoreFate::Thin})
+    for (CoreFate f : {CoreFate::Cut, CoreFate::DroppedPart, CoreFate::RepairOut, CoreFate::CleanedOut, CoreFate::Thin})
         if (fates[static_cast<std::size_t>(f)] > most) {
             most = fates[static_cast<std::size_t>(f)];
             best = f;

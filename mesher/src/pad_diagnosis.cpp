@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 
 #include <sstream>
 
 #include <Eigen/Geometry>
+
+#include "dualhex/geometry/hex_topology.hpp"
 
 namespace dualhex::mesher {
 namespace {
@@ -36,7 +39,34 @@ Eigen::Vector3d quad_centre(const geometry::HexMesh& mesh, const Quad& q) {
 struct BaseAdjacency {
     std::map<std::pair<int, int>, std::vector<std::size_t>> at_edge;
     std::map<int, int> quads_at_vertex;
+    std::size_t first_pad = 0;
+    std::vector<int> base_faces;  ///< (pad hexes, from first_pad): boundary faces of the core hex under it
 };
+
+// Per pad hex: how many boundary faces the core hex whose face is its base has (the pad
+// hexes on that core hex: base quads are core boundary faces, found by sorted ids).
+std::vector<int> base_core_faces(const geometry::HexMesh& mesh, std::size_t core_hexes) {
+    std::map<Quad, std::size_t> owner;  // core face -> core hex
+    for (std::size_t h = 0; h < core_hexes; ++h)
+        for (const auto& f : geometry::kHexFaces) {
+            Quad k{mesh.hexes[h][static_cast<std::size_t>(f[0])], mesh.hexes[h][static_cast<std::size_t>(f[1])],
+                   mesh.hexes[h][static_cast<std::size_t>(f[2])], mesh.hexes[h][static_cast<std::size_t>(f[3])]};
+            std::sort(k.begin(), k.end());
+            owner.emplace(k, h);
+        }
+    std::vector<std::size_t> base_hex;
+    std::map<std::size_t, int> faces_of;
+    for (std::size_t h = core_hexes; h < mesh.hexes.size(); ++h) {
+        Quad k = base_of(mesh, h);
+        std::sort(k.begin(), k.end());
+        const auto it = owner.find(k);
+        base_hex.push_back(it == owner.end() ? SIZE_MAX : it->second);
+        ++faces_of[base_hex.back()];
+    }
+    std::vector<int> out;
+    for (std::size_t c : base_hex) out.push_back(c == SIZE_MAX ? 0 : faces_of[c]);
+    return out;
+}
 
 BaseAdjacency base_adjacency(const geometry::HexMesh& mesh, std::size_t core_hexes) {
     BaseAdjacency a;
@@ -47,6 +77,8 @@ BaseAdjacency base_adjacency(const geometry::HexMesh& mesh, std::size_t core_hex
             ++a.quads_at_vertex[q[i]];
         }
     }
+    a.first_pad = core_hexes;
+    a.base_faces = base_core_faces(mesh, core_hexes);
     return a;
 }
 
@@ -88,13 +120,15 @@ bool count_causes(const geometry::HexMesh& mesh, std::size_t h, const BaseAdjace
         feature = feature || role == VertexRole::Curve || role == VertexRole::Corner;
     }
     const bool thin = height < 0.25 * edge;
+    const bool exposed = adj.base_faces[h - adj.first_pad] >= 3;
+    d.exposed_base += exposed;
     d.convex_edge += convex;
     d.concave_edge += concave;
     d.irregular_vertex += irregular;
     d.collapsed_top += collapsed;
     d.thin += thin;
     d.feature += feature;
-    return convex || concave || irregular || collapsed || thin || feature;
+    return convex || concave || irregular || collapsed || thin || feature || exposed;
 }
 
 }  // namespace
@@ -124,7 +158,7 @@ std::string PadDiagnosis::summary() const {
     s << "below " << threshold << ": core " << core_below << " (" << core_inverted << " inverted), pad " << pad_below
       << " (" << pad_inverted << " inverted); pad causes: convex " << convex_edge << ", concave " << concave_edge
       << ", corner-vertex " << irregular_vertex << ", collapsed-top " << collapsed_top << ", thin " << thin
-      << ", feature " << feature << ", none " << none;
+      << ", feature " << feature << ", exposed-base " << exposed_base << ", none " << none;
     return s.str();
 }
 

@@ -8,6 +8,7 @@
 #include "dualhex/geometry/inside.hpp"
 #include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/geometry/manifold_repair.hpp"
+#include "dualhex/mesher/core_cleanup.hpp"
 #include "dualhex/mesher/core_topology.hpp"
 
 namespace dualhex::mesher {
@@ -249,6 +250,8 @@ const char* core_fate_name(CoreFate fate) {
     case CoreFate::Cut: return "cut";
     case CoreFate::Core: return "core";
     case CoreFate::FillCore: return "fill";
+    case CoreFate::CleanedOut: return "cleanup_removed";
+    case CoreFate::CleanedIn: return "cleanup_added";
     }
     return "?";
 }
@@ -256,6 +259,73 @@ const char* core_fate_name(CoreFate fate) {
 CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded, std::size_t input_components,
                           const CoreOptions& options) {
     return select_core(dual, embedded, std::vector<geometry::SurfaceComponent>(input_components), options, false);
+}
+
+namespace {
+
+// The dual's hexes as int cells, and per hex its least corner signed distance and mean edge.
+struct DualCells {
+    std::vector<std::array<int, 8>> cells;
+    std::vector<double> depth, top, edge;  // least and largest corner signed distance, mean edge
+};
+
+DualCells dual_cells(const ClippedDual& dual, const EmbeddedDual& embedded) {
+    DualCells d;
+    for (const auto& hex : dual.hexes) {
+        std::array<int, 8> c{};
+        double depth = INFINITY, top = -INFINITY;
+        for (std::size_t i = 0; i < 8; ++i) {
+            c[i] = static_cast<int>(hex[i]);
+            depth = std::min(depth, embedded.signed_distance[hex[i]]);
+            top = std::max(top, embedded.signed_distance[hex[i]]);
+        }
+        d.cells.push_back(c);
+        d.depth.push_back(depth);
+        d.top.push_back(top);
+        d.edge.push_back(mean_edge(hex, embedded.points));
+    }
+    return d;
+}
+
+bool same_boundary(const geometry::HexTopology& a, const geometry::HexTopology& b) {
+    if (a.non_manifold_edges < b.non_manifold_edges || a.non_manifold_vertices < b.non_manifold_vertices) return false;
+    const auto eulers = [](const geometry::HexTopology& t) {  // components by face count: their order may change
+        std::vector<std::int64_t> e;
+        for (const auto& c : t.boundary_components) e.push_back(c.euler());
+        std::sort(e.begin(), e.end());
+        return e;
+    };
+    return a.hex_components == b.hex_components && eulers(a) == eulers(b);
+}
+
+}  // namespace
+
+void clean_core_selection(const ClippedDual& dual, const EmbeddedDual& embedded, const CoreOptions& options,
+                          CoreSelection& core) {
+    if (core.mesh.hexes.empty()) return;
+    const DualCells d = dual_cells(dual, embedded);
+    const std::size_t m = d.cells.size();
+    std::vector<char> in(m, 0), flippable(m, 0);
+    for (std::uint32_t h : core.dual_hex) in[h] = 1;
+    for (std::size_t h = 0; h < m; ++h)
+        flippable[h] = in[h] ? d.top[h] < options.cleanup_remove_depth * d.edge[h]
+                             : d.depth[h] - options.cleanup_margin * d.edge[h] > 0;
+    const CoreCleanup cleaned = clean_core(d.cells, embedded.points.size(), in, flippable);
+    core.cleanup_removed = cleaned.removed;
+    core.cleanup_added = cleaned.added;
+    core.cleanup_refused = cleaned.refused;
+    core.cleanup_sweeps = cleaned.sweeps;
+    if (cleaned.removed + cleaned.added == 0) return;
+    CoreSelection next = core;
+    keep_largest_parts(d.cells, cleaned.in, embedded, std::max<std::size_t>(1, core.kept_components.size()), next);
+    if (!same_boundary(geometry::check_hex_topology(core.mesh, 0), geometry::check_hex_topology(next.mesh, 0))) {
+        core.cleanup_reverted = true;
+        return;
+    }
+    next.dropped_components = core.dropped_components;
+    for (std::size_t h = 0; h < m; ++h)
+        if (in[h] != cleaned.in[h]) next.fate[h] = in[h] ? CoreFate::CleanedOut : CoreFate::CleanedIn;
+    core = std::move(next);
 }
 
 CoreSelection select_core(const ClippedDual& dual, const EmbeddedDual& embedded,

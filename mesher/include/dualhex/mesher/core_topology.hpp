@@ -29,6 +29,7 @@
 // the disks that close tunnels, the necks that join parts.
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace dualhex::mesher {
@@ -45,5 +46,24 @@ namespace dualhex::mesher {
                                                         const std::vector<char>& fill,
                                                         const std::vector<double>& score, std::size_t parts,
                                                         std::size_t handles);
+
+/// The same test, one hex at a time, on a selection that changes (core_cleanup.hpp): whether
+/// hex c may join (c not in) or leave (c in) the selection without changing its boundary's
+/// topology and manifoldness — c meets the other side in a closed disk of its faces (for
+/// leaving, a face of c that no other hex has is met by the outside of the mesh).
+class SelectionFlips {
+public:
+    SelectionFlips(const std::vector<std::array<int, 8>>& cells, std::size_t vertex_count, std::vector<char> in);
+    ~SelectionFlips();
+    SelectionFlips(const SelectionFlips&) = delete;
+    SelectionFlips& operator=(const SelectionFlips&) = delete;
+    [[nodiscard]] bool simple(int c) const;  ///< flipping c keeps the topology
+    void flip(int c);
+    [[nodiscard]] const std::vector<char>& in() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace dualhex::mesher

@@ -12,7 +12,8 @@
 //         degrees), a base vertex with != 4 core boundary quads (a core corner), a top
 //         quad collapsed (a top edge < 0.25 x the mean base edge: outer points bunched on
 //         the surface), a thin pad (mean base-to-top distance < 0.25 x the mean base edge),
-//         a vertex on a feature (Curve/Corner role).
+//         a vertex on a feature (Curve/Corner role), a base on an exposed core hex (one
+//         with >= 3 boundary faces: a core corner, ridge or spike, core_cleanup.hpp).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -28,7 +29,7 @@ struct PadDiagnosis {
     std::size_t core_inverted = 0, pad_inverted = 0;  ///< of them, inverted or flat
     // Pad hexes below the threshold showing each cause (a hex may show several).
     std::size_t convex_edge = 0, concave_edge = 0, irregular_vertex = 0, collapsed_top = 0, thin = 0,
-                feature = 0, none = 0;
+                feature = 0, exposed_base = 0, none = 0;
     [[nodiscard]] std::string summary() const;
 };
 

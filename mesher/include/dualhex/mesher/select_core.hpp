@@ -62,6 +62,14 @@ struct EmbeddedDual {
                                         const std::vector<geometry::SurfaceComponent>& input,
                                         const CoreOptions& options, bool control_topology);
 
+/// The core cleanup (core_cleanup.hpp) applied to a selection `core` made by select_core from
+/// the same dual: the exposed hexes flipped where that keeps the topology, the mesh, dual_hex
+/// and fates updated; if the cleaned core's boundary has other components or Euler
+/// characteristics or is less manifold than before (the flips rule it out; checked), the
+/// core stays as it was and cleanup_reverted is set. Does nothing for an empty core.
+void clean_core_selection(const ClippedDual& dual, const EmbeddedDual& embedded, const CoreOptions& options,
+                          CoreSelection& core);
+
 /// Face-connected components of `hexes` (ids in [0, vertex_count)): per hex its component
 /// index, components numbered by decreasing size (ties: smallest first hex first).
 [[nodiscard]] std::vector<int> hex_face_components(const std::vector<std::array<int, 8>>& hexes,
