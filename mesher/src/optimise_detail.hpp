@@ -1,11 +1,14 @@
 #pragma once
 // Internal to the optimise stage: what its two phases share.
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <vector>
 
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/mesher/constrained_position.hpp"
+#include "dualhex/mesher/mesh_pipeline.hpp"  // kFlatScaledJacobian
+#include "dualhex/mesher/quality_state.hpp"
 #include "hex_energy.hpp"
 
 namespace dualhex::mesher::detail {
@@ -32,7 +35,14 @@ struct OptimiseContext {
     [[nodiscard]] bool stopped() const { return hit_budget || hit_time; }
 };
 
-/// Of the hexes at v, with v at x: how many are inverted (SJ <= 0 or NaN), their minimum SJ.
+/// The hexes the optimiser works on: inverted or flat (scaled Jacobian <= the check stage's
+/// kFlatScaledJacobian, or NaN), so that it does not stop at hexes the check refuses.
+[[nodiscard]] inline bool is_bad(double sj) { return !(sj > kFlatScaledJacobian); }
+[[nodiscard]] inline std::size_t count_bad(const std::vector<double>& sj) {
+    return static_cast<std::size_t>(std::count_if(sj.begin(), sj.end(), is_bad));
+}
+
+/// Of the hexes at v, with v at x: how many are bad (is_bad), their minimum SJ.
 struct LocalQuality {
     std::size_t inverted = 0;
     double min = 1;
@@ -44,6 +54,12 @@ struct LocalQuality {
 
 /// Moves v to x and refreshes sj of its hexes.
 void move_vertex(OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x);
+
+/// The optimiser's contract, checked once on the whole result: if `state` has more inverted
+/// hexes or a lower minimum than `start_state`, the points go back to `start` and the state
+/// to `start_state`; true if they did.
+bool restore_if_worse(geometry::HexMesh& mesh, const std::vector<Eigen::Vector3d>& start, const QualityState& start_state,
+                      QualityState& state);
 
 /// Mean edge length of the hexes at v (the step scale).
 [[nodiscard]] double local_size(const OptimiseContext& c, const BarrierEnergy& energy, std::size_t v);
