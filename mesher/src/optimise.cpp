@@ -7,10 +7,12 @@
 #include <limits>
 
 #include "dualhex/geometry/quality.hpp"
+#include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/mesher/quality_state.hpp"
 #include "optimise_detail.hpp"
 
 namespace dualhex::mesher {
+static_assert(OptimiseOptions{}.bad_below == kFlatScaledJacobian, "the optimiser aims at what the check refuses");
 namespace detail {
 
 LocalQuality local_quality(const OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x) {
@@ -20,7 +22,8 @@ LocalQuality local_quality(const OptimiseContext& c, std::size_t v, const Eigen:
     LocalQuality q;
     for (std::size_t i = c.incidence.start[v]; i < c.incidence.start[v + 1]; ++i) {
         const double s = geometry::scaled_jacobian(c.mesh, static_cast<std::size_t>(c.incidence.hex[i]));
-        if (detail::is_bad(s)) ++q.inverted;
+        if (!(s > 0)) ++q.inverted;
+        if (is_bad(s, c.bad_below)) ++q.bad;
         q.min = std::min(q.min, std::isnan(s) ? -1.0 : s);
     }
     p = keep;
@@ -65,13 +68,16 @@ int untangle_kept(detail::OptimiseContext& c, detail::BarrierEnergy& energy, int
                   bool& kept) {
     const std::vector<Eigen::Vector3d> before = c.mesh.points;
     const std::vector<double> sj_before = state.scaled_jacobian;
-    const std::size_t bad_before = detail::count_bad(sj_before);
+    const std::size_t bad_before = detail::count_bad(sj_before, c.bad_below);
     const double min_before = geometry::summarize(sj_before).min;
     const int sweeps = detail::untangle_phase(c, energy, max_sweeps);
-    const std::size_t bad = detail::count_bad(state.scaled_jacobian);
-    kept = bad < bad_before || (bad == bad_before && geometry::summarize(state.scaled_jacobian).min >= min_before);
+    const std::size_t bad = detail::count_bad(state.scaled_jacobian, c.bad_below);
+    const std::size_t inverted = count_inverted(state.scaled_jacobian);
+    kept = inverted < state.inverted ||
+           (inverted == state.inverted &&
+            (bad < bad_before || (bad == bad_before && geometry::summarize(state.scaled_jacobian).min >= min_before)));
     if (kept) {
-        state.inverted = count_inverted(state.scaled_jacobian);
+        state.inverted = inverted;
     } else {
         c.mesh.points = before;
         state.scaled_jacobian = sj_before;
@@ -95,7 +101,7 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
     const double visits = options.work_per_vertex * static_cast<double>(mesh.points.size());
     r.work_budget = options.work_per_vertex > 0 ? static_cast<std::size_t>(std::max(1.0, std::min(visits, 1e18))) : 0;
     const std::size_t budget = r.work_budget > 0 ? r.work_budget : std::numeric_limits<std::size_t>::max();
-    detail::OptimiseContext c{mesh, domain, incidence, state.scaled_jacobian, 0};
+    detail::OptimiseContext c{mesh, domain, incidence, state.scaled_jacobian, options.bad_below, 0};
     if (options.time_limit_ms > 0) {
         c.timed = true;
         c.deadline = std::chrono::steady_clock::now() +
@@ -107,7 +113,7 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
     // gets at most half of what is left of the budget, so the next always has some.
     constexpr int kRounds = 4;
     for (int round = 0; round < kRounds && !c.hit_time; ++round) {
-        const std::size_t bad_at_start = detail::count_bad(state.scaled_jacobian);
+        const std::size_t bad_at_start = detail::count_bad(state.scaled_jacobian, c.bad_below);
         auto half_of_rest = [&] { return budget == std::numeric_limits<std::size_t>::max() ? budget
                                                                                           : c.work + (budget - c.work + 1) / 2; };
         if (bad_at_start > 0) {
@@ -123,17 +129,17 @@ OptimiseResult optimise_mesh(geometry::HexMesh& mesh, const VertexConstraints& c
         r.moves += detail::quality_phase(c, energy, options.min_quality, options.quality_sweeps, sweeps);
         r.quality_sweeps += sweeps;
         state.inverted = count_inverted(state.scaled_jacobian);
-        const std::size_t bad = detail::count_bad(state.scaled_jacobian);
+        const std::size_t bad = detail::count_bad(state.scaled_jacobian, c.bad_below);
         if (bad == 0 || bad >= bad_at_start || c.work >= budget) break;
     }
     r.work = c.work;
     // Each rescue has its own budget (work_per_vertex per region vertex), and runs only while
     // the main budget is not spent, so a starved run stays starved.
-    for (int rescue = 0; rescue < options.rescue_rounds && detail::count_bad(state.scaled_jacobian) > 0 && !c.hit_time && c.work < budget;
+    for (int rescue = 0; rescue < options.rescue_rounds && detail::count_bad(state.scaled_jacobian, c.bad_below) > 0 && !c.hit_time && c.work < budget;
          ++rescue) {
         std::vector<std::size_t> inverted;
         for (std::size_t h = 0; h < state.scaled_jacobian.size(); ++h)
-            if (detail::is_bad(state.scaled_jacobian[h])) inverted.push_back(h);
+            if (detail::is_bad(state.scaled_jacobian[h], c.bad_below)) inverted.push_back(h);
         OptimiseOptions local = options;
         local.rescue_rounds = 0;
         local.time_limit_ms = c.timed ? std::max(1e-3, std::chrono::duration<double, std::milli>(

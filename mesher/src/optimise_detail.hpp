@@ -7,7 +7,6 @@
 
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/mesher/constrained_position.hpp"
-#include "dualhex/mesher/mesh_pipeline.hpp"  // kFlatScaledJacobian
 #include "dualhex/mesher/quality_state.hpp"
 #include "hex_energy.hpp"
 
@@ -18,6 +17,7 @@ struct OptimiseContext {
     const VertexDomain& domain;
     const VertexHexes& incidence;
     std::vector<double>& sj;  ///< (hexes) kept current by every accepted move
+    double bad_below;         ///< OptimiseOptions::bad_below
     std::size_t work_limit;   ///< vertex visits allowed so far (the current phase's share)
     std::size_t work = 0;     ///< vertex visits done
     bool timed = false;       ///< the opt-in wall-clock bound is on
@@ -35,19 +35,22 @@ struct OptimiseContext {
     [[nodiscard]] bool stopped() const { return hit_budget || hit_time; }
 };
 
-/// The hexes the optimiser works on: inverted or flat (scaled Jacobian <= the check stage's
-/// kFlatScaledJacobian, or NaN), so that it does not stop at hexes the check refuses.
-[[nodiscard]] inline bool is_bad(double sj) { return !(sj > kFlatScaledJacobian); }
-[[nodiscard]] inline std::size_t count_bad(const std::vector<double>& sj) {
-    return static_cast<std::size_t>(std::count_if(sj.begin(), sj.end(), is_bad));
+/// The hexes the phases work on: scaled Jacobian <= bad_below (OptimiseOptions) or NaN.
+[[nodiscard]] inline bool is_bad(double sj, double bad_below) { return !(sj > bad_below); }
+[[nodiscard]] inline std::size_t count_bad(const std::vector<double>& sj, double bad_below) {
+    return static_cast<std::size_t>(std::count_if(sj.begin(), sj.end(), [&](double s) { return is_bad(s, bad_below); }));
 }
 
-/// Of the hexes at v, with v at x: how many are bad (is_bad), their minimum SJ.
+/// Of the hexes at v, with v at x: how many are inverted (<= 0 or NaN), how many bad
+/// (is_bad), their minimum SJ; compared in that order, so a flat hex is never bought with
+/// an inverted one.
 struct LocalQuality {
-    std::size_t inverted = 0;
+    std::size_t inverted = 0, bad = 0;
     double min = 1;
     [[nodiscard]] bool better_than(const LocalQuality& o) const {
-        return inverted < o.inverted || (inverted == o.inverted && min > o.min + 1e-12);
+        if (inverted != o.inverted) return inverted < o.inverted;
+        if (bad != o.bad) return bad < o.bad;
+        return min > o.min + 1e-12;
     }
 };
 [[nodiscard]] LocalQuality local_quality(const OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x);

@@ -3,6 +3,7 @@
 // paper's eps continuation.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <Eigen/Cholesky>
 
@@ -18,7 +19,7 @@ std::vector<std::size_t> near_inverted(const OptimiseContext& c, int rings, std:
     std::vector<char> in(c.mesh.points.size(), 0);
     hex_active.assign(c.mesh.hexes.size(), 0);
     for (std::size_t h = 0; h < c.sj.size(); ++h)
-        if (is_bad(c.sj[h])) hex_active[h] = 1;
+        if (is_bad(c.sj[h], c.bad_below)) hex_active[h] = 1;
     for (int r = 0; r <= rings; ++r) {
         for (std::size_t h = 0; h < hex_active.size(); ++h)
             if (hex_active[h])
@@ -92,18 +93,17 @@ constexpr double kSigmaFloor = 0.3;
 
 double chi(double d, double eps) { return 0.5 * (d + std::sqrt(eps * eps + d * d)); }
 
-// The fewest inverted hexes seen, then the highest minimum: the points and sj to return to.
+// The best state seen (fewest inverted hexes, then fewest bad ones, then the highest
+// minimum): the points and sj to return to.
 struct BestState {
-    std::size_t inverted;
-    double min;
+    LocalQuality q{SIZE_MAX, SIZE_MAX, -INFINITY};
     std::vector<Eigen::Vector3d> points;
     std::vector<double> sj;
-    void offer(const OptimiseContext& c, std::size_t inv) {
-        double m = INFINITY;
-        for (double q : c.sj) m = std::min(m, std::isnan(q) ? -1.0 : q);
-        if (inv > inverted || (inv == inverted && !(m > min))) return;
-        inverted = inv;
-        min = m;
+    void offer(const OptimiseContext& c) {
+        LocalQuality now{count_inverted(c.sj), count_bad(c.sj, c.bad_below), INFINITY};
+        for (double s : c.sj) now.min = std::min(now.min, std::isnan(s) ? -1.0 : s);
+        if (!now.better_than(q)) return;
+        q = now;
         points = c.mesh.points;
         sj = c.sj;
     }
@@ -140,9 +140,9 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
     (void)totals(min_det, false);
     energy.eps = initial_eps(min_det);
     constexpr int kStallSweeps = 25, kMaxRings = 4;
-    BestState best{count_bad(c.sj), -INFINITY, {}, {}};
-    best.offer(c, best.inverted);
-    std::size_t fewest = best.inverted;
+    BestState best;
+    best.offer(c);
+    std::size_t fewest = best.q.bad;
     int best_sweep = 0, sweep = 0;
     while (sweep < max_sweeps && !c.stopped()) {
         double unused = 0;
@@ -170,8 +170,8 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
         moved_hexes.clear();
         ++sweep;
         const double e = totals(min_det, false);
-        const std::size_t inverted = count_bad(c.sj);
-        best.offer(c, inverted);
+        const std::size_t inverted = count_bad(c.sj, c.bad_below);
+        best.offer(c);
         if (inverted == 0) break;
         if (inverted < fewest) {
             fewest = inverted;
