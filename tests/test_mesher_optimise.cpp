@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "dualhex/geometry/aabb_tree.hpp"
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/mesher/optimise.hpp"
 #include "dualhex/mesher/surface_smooth.hpp"
+#include "../mesher/src/optimise_detail.hpp"  // internal: the final contract check
 #include "test_geometry_fixture.hpp"
 #include "test_geometry_hex_block.hpp"
 
@@ -173,4 +176,99 @@ TEST(MesherSmooth, SurfaceSmoothingStaysOnTheSurface) {
         if (c.role[v] == VertexRole::Surface) EXPECT_LT(tree.squared_distance(m.points[v]), 1e-24) << v;
         if (c.role[v] != VertexRole::Surface) EXPECT_EQ(m.points[v], before.points[v]) << v;
     }
+}
+
+// A deliberately tangled block: every interior vertex of a 4x4x4 block scattered by up to
+// 0.9 of an edge (a fixed pseudo-random sequence), the boundary held: many hexes inverted,
+// the untangler (with the phases after it) leaves none.
+TEST(MesherOptimise, UntanglesAScrambledBlock) {
+    HexMesh m = geometry_test::hex_block(4, 4, 4).mesh;
+    VertexConstraints c = VertexConstraints::interior(m.points.size());
+    std::uint32_t seed = 12345;
+    auto next = [&] {  // a small LCG: the same scramble on every platform
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<double>(seed >> 8) / static_cast<double>(1u << 24) * 2 - 1;
+    };
+    for (std::size_t v = 0; v < m.points.size(); ++v) {
+        const Eigen::Vector3d p = m.points[v];
+        const bool boundary = p.minCoeff() == 0 || p.maxCoeff() == 4;
+        if (boundary) {
+            c.role[v] = VertexRole::Corner;
+            continue;
+        }
+        for (int a = 0; a < 3; ++a) m.points[v][a] += 0.9 * next();
+    }
+    const std::size_t tangled = count_inverted(m);
+    ASSERT_GE(tangled, 10u);
+    const geometry::AabbTree tree(geometry_test::unit_cube_surface(0.0, 4.0));
+    QualityState state = quality_state(m);
+    OptimiseOptions options;
+    options.min_quality = 0.5;
+    const OptimiseResult r = optimise_mesh(m, c, tree, {}, options, state);
+    EXPECT_EQ(r.inverted_before, tangled);
+    EXPECT_EQ(r.inverted_after, 0u);
+    EXPECT_FALSE(r.restored);
+    EXPECT_EQ(count_inverted(m), 0u);
+    EXPECT_GT(geometry::summarize(geometry::scaled_jacobians(m)).min, 0.2);
+}
+
+// Two hexes that share only their free corner v, every other corner held, placed so that
+// no position of v makes both valid: the untangler frees one (fewer inverted hexes, kept)
+// and the other stays inverted, no lower than the start's minimum, so nothing is restored.
+TEST(MesherOptimise, OfTwoHexesThatCannotBothBeValidOneIsFreed) {
+    HexMesh m;
+    auto add_cube = [&](const Eigen::Vector3d& lo) {
+        std::array<int, 8> ids{};
+        const int base = static_cast<int>(m.points.size());
+        const Eigen::Vector3d corner[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                           {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+        for (int k = 0; k < 8; ++k) {
+            m.points.push_back(lo + corner[k]);
+            ids[static_cast<std::size_t>(k)] = base + k;
+        }
+        m.hexes.push_back(ids);
+    };
+    add_cube({1.1, 0, 0});   // valid only with v.x > 1.1 (its corner 6 would be (2.1, 1, 1))
+    add_cube({-0.3, 1, 1});  // valid only with v.x < 0.7 (its corner 0 would be (-0.3, 1, 1))
+    const int v = 6;        // A's corner 6 and B's corner 0: one vertex at (1, 1, 1)
+    m.points[6] = {1, 1, 1};
+    m.hexes[1][0] = v;
+    VertexConstraints c = VertexConstraints::interior(m.points.size());
+    for (std::size_t p = 0; p < m.points.size(); ++p)
+        if (p != static_cast<std::size_t>(v)) c.role[p] = VertexRole::Corner;
+    const std::vector<Eigen::Vector3d> start = m.points;
+    QualityState state = quality_state(m);
+    ASSERT_EQ(state.inverted, 2u);
+    const geometry::AabbTree tree(geometry_test::unit_cube_surface(0.0, 3.0));
+    const OptimiseResult r = optimise_mesh(m, c, tree, {}, {}, state);
+    EXPECT_TRUE(r.untangle_kept);
+    EXPECT_FALSE(r.restored);
+    EXPECT_EQ(r.inverted_after, 1u);
+    EXPECT_GE(r.min_after, r.min_before);
+    EXPECT_NE(m.points, start);
+    EXPECT_EQ(state.scaled_jacobian, quality_state(m).scaled_jacobian);
+}
+
+// The final contract check (optimise_detail.hpp restore_if_worse) on contrived phase
+// results: a phase that lowered the minimum (no hex inverted) or inverted a hex is undone,
+// one that raised the minimum is kept.
+TEST(MesherOptimise, TheFinalContractCheckRestoresTheStart) {
+    HexMesh m = geometry_test::hex_block(3, 3, 3).mesh;
+    const std::size_t v = static_cast<std::size_t>(id(1, 1, 1));
+    m.points[v] += Eigen::Vector3d(0.2, 0.1, 0);
+    const std::vector<Eigen::Vector3d> start = m.points;
+    const QualityState start_state = quality_state(m);
+    auto phase = [&](const Eigen::Vector3d& to) {  // "a phase": v moved to `to`
+        m.points[v] = to;
+        QualityState state = quality_state(m);
+        const bool restored = detail::restore_if_worse(m, start, start_state, state);
+        EXPECT_EQ(state.scaled_jacobian, quality_state(m).scaled_jacobian);
+        return restored;
+    };
+    EXPECT_TRUE(phase({1.35, 1.2, 1.1}));  // valid, a lower minimum
+    EXPECT_EQ(m.points, start);
+    EXPECT_TRUE(phase({2.5, 1, 1}));  // through the far faces: inverted
+    EXPECT_EQ(m.points, start);
+    EXPECT_FALSE(phase({1, 1, 1}));  // back to the cube's lattice: better
+    EXPECT_EQ(m.points[v], Eigen::Vector3d(1, 1, 1));
 }

@@ -80,6 +80,7 @@ void refuse_inverting_snaps(geometry::HexMesh& mesh, const std::vector<Eigen::Ve
     if (options.repair_work_per_vertex > 0) {
         OptimiseOptions repair;
         repair.min_quality = 1e-3;  // untangle only: raising quality is the optimise stage's job
+        repair.bad_below = 0;       // inverted hexes only: flat ones too are the optimise stage's
         repair.work_per_vertex = options.repair_work_per_vertex;
         (void)optimise_region(mesh, bad, options.repair_rings, constraints, tree, curves, repair);
         state = quality_state(mesh);

@@ -110,6 +110,41 @@ double BarrierEnergy::hex(const geometry::HexMesh& mesh, std::size_t h, int move
     return sum;
 }
 
+double BarrierEnergy::hex_newton(const geometry::HexMesh& mesh, std::size_t h, int moved, const Eigen::Vector3d& at,
+                                 Eigen::Vector3d& gradient, Eigen::Matrix3d& hessian) const {
+    const auto& ids = mesh.hexes[h];
+    const double s = scale[h];
+    double sum = 0;
+    for (int k = 0; k < 8; ++k) {
+        // w: how the moved point enters J's columns (J = J0 + s (at - at0) w^T).
+        const auto& nb = kCornerNeighbours[static_cast<std::size_t>(k)];
+        Eigen::Vector3d w = Eigen::Vector3d::Zero();
+        if (ids[static_cast<std::size_t>(k)] == moved) w.setConstant(-1);
+        for (int i = 0; i < 3; ++i)
+            if (ids[static_cast<std::size_t>(nb[static_cast<std::size_t>(i)])] == moved) w[i] = 1;
+        if (w.isZero()) continue;
+        const Eigen::Matrix3d J = s * corner_jacobian(mesh, h, k, moved, at);
+        const Eigen::Matrix3d C = cofactor(J);
+        const double D = J.col(0).dot(C.col(0));
+        const double r = std::sqrt(eps * eps + D * D);
+        const double chi = 0.5 * (D + r), d1 = chi / r, d2 = 0.5 * eps * eps / (r * r * r);  // chi, chi', chi''
+        const double T = J.squaredNorm();
+        const double c23 = cube_root(chi * chi), phi = 1 / c23;  // chi^(2/3), chi^(-2/3)
+        const double phi1 = -2.0 / 3.0 * phi / chi * d1;
+        const double phi2 = 10.0 / 9.0 * phi / (chi * chi) * d1 * d1 - 2.0 / 3.0 * phi / chi * d2;
+        const double q = D * D + 1;
+        const double psi = q / chi, psi1 = 2 * D / chi - q * d1 / (chi * chi);
+        const double psi2 = 2 / chi - 4 * D * d1 / (chi * chi) - q * d2 / (chi * chi) + 2 * q * d1 * d1 / (chi * chi * chi);
+        const Eigen::Vector3d a = s * (C * w);        // d D / d at (constant along at)
+        const Eigen::Vector3d b = 2 * s * (J * w);    // d T / d at
+        sum += T / c23 + lambda * psi;  // as corner() computes it, to the last bit
+        gradient += phi * b + (T * phi1 + lambda * psi1) * a;
+        hessian += (2 * s * s * w.squaredNorm() * phi) * Eigen::Matrix3d::Identity() + phi1 * (b * a.transpose() + a * b.transpose()) +
+                   (T * phi2 + lambda * psi2) * (a * a.transpose());
+    }
+    return sum;
+}
+
 double BarrierEnergy::min_det(const geometry::HexMesh& mesh, std::size_t h) const {
     double m = INFINITY;
     for (int k = 0; k < 8; ++k) m = std::min(m, (scale[h] * corner_jacobian(mesh, h, k, -1, Eigen::Vector3d::Zero())).determinant());

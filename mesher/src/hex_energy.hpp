@@ -47,6 +47,12 @@ struct BarrierEnergy {
     /// moved < 0), with `moved` at `at`; `gradient` (optional) += d/d(at) of it.
     [[nodiscard]] double hex(const geometry::HexMesh& mesh, std::size_t h, int moved, const Eigen::Vector3d& at,
                              Eigen::Vector3d* gradient) const;
+    /// The same local sum as hex(h, moved, at), with its exact gradient and Hessian in `at`
+    /// (both added to). Along one vertex's position det J is affine (J changes by a rank-one
+    /// term) and tr(J^T J) quadratic, so per corner the Hessian is closed form (no finite
+    /// differences; hex_energy.cpp).
+    double hex_newton(const geometry::HexMesh& mesh, std::size_t h, int moved, const Eigen::Vector3d& at,
+                      Eigen::Vector3d& gradient, Eigen::Matrix3d& hessian) const;
     /// Minimum det J over the 8 corners of hex h (scaled as above).
     [[nodiscard]] double min_det(const geometry::HexMesh& mesh, std::size_t h) const;
 };

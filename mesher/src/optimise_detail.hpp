@@ -1,11 +1,13 @@
 #pragma once
 // Internal to the optimise stage: what its two phases share.
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <vector>
 
 #include "dualhex/geometry/hex_output.hpp"
 #include "dualhex/mesher/constrained_position.hpp"
+#include "dualhex/mesher/quality_state.hpp"
 #include "hex_energy.hpp"
 
 namespace dualhex::mesher::detail {
@@ -15,6 +17,7 @@ struct OptimiseContext {
     const VertexDomain& domain;
     const VertexHexes& incidence;
     std::vector<double>& sj;  ///< (hexes) kept current by every accepted move
+    double bad_below;         ///< OptimiseOptions::bad_below
     std::size_t work_limit;   ///< vertex visits allowed so far (the current phase's share)
     std::size_t work = 0;     ///< vertex visits done
     bool timed = false;       ///< the opt-in wall-clock bound is on
@@ -32,18 +35,34 @@ struct OptimiseContext {
     [[nodiscard]] bool stopped() const { return hit_budget || hit_time; }
 };
 
-/// Of the hexes at v, with v at x: how many are inverted (SJ <= 0 or NaN), their minimum SJ.
+/// The hexes the phases work on: scaled Jacobian <= bad_below (OptimiseOptions) or NaN.
+[[nodiscard]] inline bool is_bad(double sj, double bad_below) { return !(sj > bad_below); }
+[[nodiscard]] inline std::size_t count_bad(const std::vector<double>& sj, double bad_below) {
+    return static_cast<std::size_t>(std::count_if(sj.begin(), sj.end(), [&](double s) { return is_bad(s, bad_below); }));
+}
+
+/// Of the hexes at v, with v at x: how many are inverted (<= 0 or NaN), how many bad
+/// (is_bad), their minimum SJ; compared in that order, so a flat hex is never bought with
+/// an inverted one.
 struct LocalQuality {
-    std::size_t inverted = 0;
+    std::size_t inverted = 0, bad = 0;
     double min = 1;
     [[nodiscard]] bool better_than(const LocalQuality& o) const {
-        return inverted < o.inverted || (inverted == o.inverted && min > o.min + 1e-12);
+        if (inverted != o.inverted) return inverted < o.inverted;
+        if (bad != o.bad) return bad < o.bad;
+        return min > o.min + 1e-12;
     }
 };
 [[nodiscard]] LocalQuality local_quality(const OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x);
 
 /// Moves v to x and refreshes sj of its hexes.
 void move_vertex(OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x);
+
+/// The optimiser's contract, checked once on the whole result: if `state` has more inverted
+/// hexes or a lower minimum than `start_state`, the points go back to `start` and the state
+/// to `start_state`; true if they did.
+bool restore_if_worse(geometry::HexMesh& mesh, const std::vector<Eigen::Vector3d>& start, const QualityState& start_state,
+                      QualityState& state);
 
 /// Mean edge length of the hexes at v (the step scale).
 [[nodiscard]] double local_size(const OptimiseContext& c, const BarrierEnergy& energy, std::size_t v);

@@ -6,7 +6,8 @@
 //         curves (constrained_position.hpp), the surface's tree, its quality state.
 // Output: the mesh with moved points (ids unchanged) and its quality state; the figures.
 // Contract: the inverted count is never larger than the input's and the minimum scaled
-//         Jacobian never lower; Surface vertices end on the surface (their closest point),
+//         Jacobian never lower (checked once on the whole result, which is otherwise
+//         restored: OptimiseResult::restored); Surface vertices end on the surface (their closest point),
 //         Curve vertices on their polyline, Corner vertices where they were. Bounded by
 //         sweeps and by a work budget: work_per_vertex x the number of vertices visits of
 //         a vertex (one gradient or candidate step each; phase 1 gets at most half), counted,
@@ -15,21 +16,27 @@
 //         when it is hit the result depends on the machine (hit_time_limit says so).
 // Errors: std::invalid_argument from check_constraints.
 //
-// Phase 1, untangle (only if some hex is inverted): the barrier energy f_eps of
-// Garanzha et al. 2021 (mesher/src/hex_energy.hpp) over the 8 corner tets of every hex
-// near an inverted one (2 vertex rings), minimised by Gauss-Seidel sweeps of per-vertex
-// gradient steps (restricted to the vertex's domain, backtracking until the local energy
-// decreases); after each sweep eps is decreased by the paper's rule from the energy
-// decrease and the smallest det J; after 25 sweeps without fewer inverted hexes the region
-// grows by a ring around what is still inverted (up to 4 rings, eps restarted), then it
-// stops; it also stops when nothing is inverted. The phase is kept only if it does not break the
-// contract (else the points are restored).
+// The phases work on the bad hexes: scaled Jacobian <= bad_below (default the check stage's
+// flat threshold, so they do not stop at hexes the check refuses); the contract is on the
+// inverted count (<= 0) and the minimum.
+// Phase 1, untangle (only if some hex is bad): the barrier energy f_eps of Garanzha et al.
+// 2021 (mesher/src/hex_energy.hpp) over the 8 corner tets of every hex near a bad one
+// (2 vertex rings), minimised by Gauss-Seidel sweeps of per-vertex damped Newton steps
+// (the exact 3x3 Hessian, restricted to the vertex's domain, backtracking until the local
+// energy decreases); a sweep visits only the vertices whose energy can have changed (a
+// vertex of one of their hexes moved by > 1e-3 of the local size, or a corner det within
+// 10 eps). eps starts at the paper's value and is decreased after each sweep by the paper's
+// rule (energy-decrease floor 0.3, optimise_untangle.cpp says why); after 25 sweeps without
+// fewer bad hexes the region grows by a ring around what is still bad (up to 4 rings, from
+// the best state so far, eps restarted), then it stops; it also stops when nothing is bad.
+// It returns the best state it saw (fewest bad hexes, then the highest minimum), and is
+// kept only if that has fewer bad hexes, or as many and no lower a minimum.
 // Phase 2, quality: sweeps over the vertices of the hexes below min_quality, worst first;
 // per vertex three candidate moves (down the barrier gradient, up the numerical gradient
 // of the local minimum scaled Jacobian, towards the mean of its hexes' centroids) with
-// step halving; the best is taken only if it lowers the number of inverted hexes at the
-// vertex, or keeps it and raises their minimum scaled Jacobian. So no sweep can break the
-// contract. A vertex is retried only after a vertex of one of its hexes moved. Stops when
+// step halving; the best is taken only if it lowers the number of bad hexes at the vertex,
+// or keeps it and raises their minimum scaled Jacobian. A vertex is retried only after a
+// vertex of one of its hexes moved. Stops when
 // the minimum reaches min_quality, a sweep moves nothing, or 10 sweeps in a row did not
 // raise the minimum by 1e-4.
 #include <cstddef>
@@ -58,6 +65,10 @@ struct OptimiseOptions {
     /// (optimise_region, 2, 3, 4 rings, each with this budget per region vertex), where a
     /// fresh untangling schedule often frees what the whole-mesh run stalled on.
     int rescue_rounds = 3;
+    /// The phases work on hexes with scaled Jacobian <= this (or NaN). Default: the check
+    /// stage's kFlatScaledJacobian (mesh_pipeline.hpp), so flat hexes, which it refuses, are
+    /// not left as done; 0: inverted hexes only (the features stage's local repair).
+    double bad_below = 1e-6;
 };
 
 struct OptimiseResult {
@@ -68,6 +79,7 @@ struct OptimiseResult {
     int quality_sweeps = 0;       ///< done
     std::size_t moves = 0;        ///< accepted vertex moves of phase 2
     bool reached_target = false;  ///< min_after >= min_quality
+    bool restored = false;        ///< the final contract check put the start back (a phase broke it)
     std::size_t work = 0;          ///< vertex visits done (both phases)
     std::size_t work_budget = 0;   ///< allowed (0: unbounded)
     bool hit_work_budget = false;  ///< stopped by the budget (deterministic)
