@@ -7,12 +7,10 @@
 #include <limits>
 
 #include "dualhex/geometry/quality.hpp"
-#include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/mesher/quality_state.hpp"
 #include "optimise_detail.hpp"
 
 namespace dualhex::mesher {
-static_assert(OptimiseOptions{}.bad_below == kFlatScaledJacobian, "the optimiser aims at what the check refuses");
 namespace detail {
 
 LocalQuality local_quality(const OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x) {

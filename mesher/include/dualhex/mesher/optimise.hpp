@@ -16,9 +16,9 @@
 //         when it is hit the result depends on the machine (hit_time_limit says so).
 // Errors: std::invalid_argument from check_constraints.
 //
-// The phases work on the bad hexes: scaled Jacobian <= bad_below (default the check stage's
-// flat threshold, so they do not stop at hexes the check refuses); the contract is on the
-// inverted count (<= 0) and the minimum.
+// The phases work on the bad hexes: scaled Jacobian <= bad_below (default 0: inverted ones;
+// the check's flat threshold 1e-6 adds flat ones, measured slower and worse, mesher/README.md);
+// the contract is on the inverted count (<= 0) and the minimum.
 // Phase 1, untangle (only if some hex is bad): the barrier energy f_eps of Garanzha et al.
 // 2021 (mesher/src/hex_energy.hpp) over the 8 corner tets of every hex near a bad one
 // (2 vertex rings), minimised by Gauss-Seidel sweeps of per-vertex damped Newton steps
@@ -65,10 +65,11 @@ struct OptimiseOptions {
     /// (optimise_region, 2, 3, 4 rings, each with this budget per region vertex), where a
     /// fresh untangling schedule often frees what the whole-mesh run stalled on.
     int rescue_rounds = 3;
-    /// The phases work on hexes with scaled Jacobian <= this (or NaN). Default: the check
-    /// stage's kFlatScaledJacobian (mesh_pipeline.hpp), so flat hexes, which it refuses, are
-    /// not left as done; 0: inverted hexes only (the features stage's local repair).
-    double bad_below = 1e-6;
+    /// The phases work on hexes with scaled Jacobian <= this (or NaN). Default 0: inverted
+    /// hexes only. kFlatScaledJacobian (1e-6, what the check refuses) makes them chase flat
+    /// hexes too: on the CAD models that doubled the CPU and the share below 0.5 without
+    /// freeing their flat hexes (mesher/README.md, measured), so it is opt-in.
+    double bad_below = 0;
 };
 
 struct OptimiseResult {
