@@ -73,6 +73,8 @@ const std::vector<OptionBinding>& options_table() {
         field("surface_band", &Options::surface_band),
         field("thickness_levels", &Options::thickness_levels),
         field("curvature_levels", &Options::curvature_levels),
+        field("refine_rounds", &Options::refine_rounds),
+        field("refine_distance", &Options::refine_distance),
         field("feature_angle", &Options::feature_angle),
         nested_field("min_quality", &Options::optimise, &mesher::OptimiseOptions::min_quality),
         nested_field("optimise_work", &Options::optimise, &mesher::OptimiseOptions::work_per_vertex),

@@ -105,6 +105,7 @@ def test_a_preset_is_applied_first_and_refined_by_the_other_options():
     assert absolute["size"] == 0.5 and absolute["size_rel"] == 0  # as --size does
     core = dualhex.mesh(max_depth=4, core_margin=0.2, pad_ray_limit=3.0).report["options"]
     assert core["core_margin"] == 0.2 and core["pad_ray_limit"] == 3.0
+    assert dualhex.mesh(max_depth=4, refine_rounds=1).report["options"]["refine_rounds"] == 1
 
 
 def two_cubes():
@@ -146,6 +147,7 @@ def test_inverted_hexes_raise_naming_them():
     ({"smooth_iterations": -1}, ValueError, "smoothing"),
     ({"preset": "huge"}, ValueError, "preset must be"),
     ({"core_margin": -1.0}, ValueError, "core margin"),
+    ({"refine_rounds": 9}, ValueError, "refine"),
 ])
 def test_bad_options(kwargs, error, text):
     with pytest.raises(error) as e:
