@@ -7,6 +7,7 @@
 
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/geometry/surface_distance.hpp"
+#include "far_samples.hpp"
 #include "hex_edges.hpp"
 
 namespace dualhex::mesher {
@@ -43,37 +44,13 @@ CoreFate cause_of(const std::array<std::size_t, kCoreFates>& fates) {
 
 namespace {
 
-struct FarSample {
-    double distance;
-    Eigen::Vector3d point, closest;  // the sample, its closest point on the other side
-};
-
-// Samples of `from` (vertices, triangle centroids) farther than `far` from `to`, farthest first.
-std::vector<FarSample> far_samples(const geometry::TriangleSurface& from, const geometry::AabbTree& to, double far) {
-    std::vector<char> used(from.vertices.size(), 0);
-    for (const auto& t : from.triangles)
-        for (int v : t) used[static_cast<std::size_t>(v)] = 1;
-    std::vector<FarSample> out;
-    const auto sample = [&](const Eigen::Vector3d& p) {
-        const geometry::ClosestPoint c = to.closest_point(p);
-        if (c.squared_distance > far * far) out.push_back({std::sqrt(c.squared_distance), p, c.point});
-    };
-    for (std::size_t v = 0; v < from.vertices.size(); ++v)
-        if (used[v]) sample(from.vertices[v]);
-    for (const auto& t : from.triangles)
-        sample((from.vertices[static_cast<std::size_t>(t[0])] + from.vertices[static_cast<std::size_t>(t[1])] +
-                from.vertices[static_cast<std::size_t>(t[2])]) / 3.0);
-    std::stable_sort(out.begin(), out.end(), [](const FarSample& a, const FarSample& b) { return a.distance > b.distance; });
-    return out;
-}
-
 // The places of `samples` (farthest first, one per ball of its distance), with the fates of
 // the dual hexes within the distance of the input's point (for a hex-boundary sample: its
 // closest input point, where the core should have reached).
-void add_places(const std::vector<FarSample>& samples, bool on_hex_boundary,
+void add_places(const std::vector<detail::FarSample>& samples, bool on_hex_boundary,
                 const CoreSelection& core, std::size_t max_points, std::vector<FarSurfacePoint>& out) {
     const std::size_t first = out.size();
-    for (const FarSample& sample : samples) {
+    for (const detail::FarSample& sample : samples) {
         const double d = sample.distance;
         const Eigen::Vector3d& p = sample.point;
         const Eigen::Vector3d& centre = on_hex_boundary ? sample.closest : sample.point;
@@ -99,8 +76,8 @@ std::vector<FarSurfacePoint> far_surface_points(const geometry::HexMesh& mesh, c
                                                 const CoreSelection& core, double far, std::size_t max_points) {
     const geometry::AabbTree boundary(geometry::boundary_triangles(mesh));
     std::vector<FarSurfacePoint> out;
-    add_places(far_samples(surface.surface(), boundary, far), false, core, max_points, out);
-    add_places(far_samples(boundary.surface(), surface, far), true, core, max_points, out);
+    add_places(detail::far_samples(surface.surface(), boundary, far), false, core, max_points, out);
+    add_places(detail::far_samples(boundary.surface(), surface, far), true, core, max_points, out);
     return out;
 }
 

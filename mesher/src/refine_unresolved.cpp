@@ -6,46 +6,20 @@
 #include <cmath>
 
 #include "dualhex/geometry/surface_distance.hpp"
+#include "far_samples.hpp"
 
 namespace dualhex::mesher {
-
-namespace {
-
-// Samples of `from` (used vertices, triangle centroids) farther than `far` from `to` (its
-// distance to them; empty: every sample, at `far`): the point `to`'s closest point if
-// at_closest, else the sample itself.
-void far_samples(const geometry::TriangleSurface& from, const geometry::AabbTree* to, double far, bool at_closest,
-                 std::vector<UnresolvedPlace>& out) {
-    const auto sample = [&](const Eigen::Vector3d& p) {
-        if (!to) {
-            out.push_back({p, far});
-            return;
-        }
-        const geometry::ClosestPoint c = to->closest_point(p);
-        if (c.squared_distance > far * far) out.push_back({at_closest ? c.point : p, std::sqrt(c.squared_distance)});
-    };
-    std::vector<char> used(from.vertices.size(), 0);
-    for (const auto& t : from.triangles)
-        for (int v : t) used[static_cast<std::size_t>(v)] = 1;
-    for (std::size_t v = 0; v < from.vertices.size(); ++v)
-        if (used[v]) sample(from.vertices[v]);
-    for (const auto& t : from.triangles)
-        sample((from.vertices[static_cast<std::size_t>(t[0])] + from.vertices[static_cast<std::size_t>(t[1])] +
-                from.vertices[static_cast<std::size_t>(t[2])]) / 3.0);
-}
-
-}  // namespace
 
 std::vector<UnresolvedPlace> unresolved_places(const geometry::HexMesh& core, const geometry::AabbTree& surface,
                                                double far) {
     const geometry::TriangleSurface boundary = geometry::boundary_triangles(core);
     std::vector<UnresolvedPlace> samples;
     if (boundary.triangles.empty()) {  // an empty core resolves nothing
-        far_samples(surface.surface(), nullptr, far, false, samples);
-    } else {
+        for (const Eigen::Vector3d& p : detail::surface_samples(surface.surface())) samples.push_back({p, far});
+    } else {  // input samples far from the core where they are; core samples at their input point
         const geometry::AabbTree to_core(boundary);
-        far_samples(surface.surface(), &to_core, far, false, samples);
-        far_samples(boundary, &surface, far, true, samples);
+        for (const auto& f : detail::far_samples(surface.surface(), to_core, far)) samples.push_back({f.point, f.distance});
+        for (const auto& f : detail::far_samples(boundary, surface, far)) samples.push_back({f.closest, f.distance});
     }
     std::stable_sort(samples.begin(), samples.end(),
                      [](const UnresolvedPlace& a, const UnresolvedPlace& b) { return a.distance > b.distance; });
