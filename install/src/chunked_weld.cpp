@@ -25,13 +25,14 @@ struct Chunk {
     std::vector<std::uint32_t> leaf_cells;  // cells after each of its leaves (local count)
     // Per local vertex / face: its global id (owned: >= the chunk's base).
     std::vector<std::uint32_t> vertex_id, face_id;
-    std::vector<std::uint64_t> vertex_owner, face_owner;  // owner refs (OwnerTable), until the ids are known
+    // Owner refs (OwnerTable), until the ids are known (first the keys' table slots).
+    std::vector<std::uint64_t> vertex_owner, face_owner;
     std::vector<std::uint8_t> face_flip;  // foreign face met in the direction opposite to its owner's
     // Vertices some other chunk holds too; only a face all of whose vertices are shared can
     // be (its chunk alone owns the others: no table lookup).
     std::vector<std::uint8_t> vertex_shared;
-    // The local faces' hashes over global vertex ids (invariant under rotation and reversal),
-    // and whether all its vertices are shared (it may be in another chunk).
+    // The local faces' hashes over global vertex ids (invariant under rotation and reversal;
+    // once inserted, a shared face's table slot), and whether all its vertices are shared (it may be in another chunk).
     std::vector<std::uint64_t> face_hash;
     std::vector<std::uint8_t> face_shared;
     std::size_t n_faces = 0, n_cells = 0, n_halffaces = 0;
@@ -102,16 +103,17 @@ void number_vertices(Chunks& chunks) {
         return chunks[OwnerTable::chunk_of(r)].parts.positions[OwnerTable::local_of(r)];
     };
     const auto same = [&](std::uint64_t a, std::uint64_t b) { return point(a) == point(b); };
-    for_each_chunk(chunks, [&](Chunk& chunk, std::size_t c) {
-        const auto& ps = chunk.parts.positions;
-        for (std::size_t i = 0; i < ps.size(); ++i) table.insert(LatticePointHash{}(ps[i]), OwnerTable::ref(c, i), same);
-    });
+    // Each chunk remembers its keys' slots (in vertex_owner, until the refs replace them).
     for_each_chunk(chunks, [&](Chunk& chunk, std::size_t c) {
         const auto& ps = chunk.parts.positions;
         chunk.vertex_owner.resize(ps.size());
-        chunk.vertex_shared.resize(ps.size());
-        for (std::size_t i = 0; i < ps.size(); ++i) {
-            const OwnerTable::Owner o = table.owner(LatticePointHash{}(ps[i]), OwnerTable::ref(c, i), same);
+        for (std::size_t i = 0; i < ps.size(); ++i)
+            chunk.vertex_owner[i] = table.insert(LatticePointHash{}(ps[i]), OwnerTable::ref(c, i), same);
+    });
+    for_each_chunk(chunks, [&](Chunk& chunk, std::size_t c) {
+        chunk.vertex_shared.resize(chunk.vertex_owner.size());
+        for (std::size_t i = 0; i < chunk.vertex_owner.size(); ++i) {
+            const OwnerTable::Owner o = table.at(static_cast<std::uint32_t>(chunk.vertex_owner[i]));
             chunk.vertex_owner[i] = o.ref;
             chunk.vertex_shared[i] = o.shared ? 1 : 0;
             chunk.owned_vertices += OwnerTable::chunk_of(o.ref) == c ? 1 : 0;
@@ -183,17 +185,18 @@ void number_faces(Chunks& chunks) {
     OwnerTable table(total);
     const auto loop = [&](std::uint64_t r) { return chunks[OwnerTable::chunk_of(r)].loop(OwnerTable::local_of(r)); };
     const auto same = [&](std::uint64_t a, std::uint64_t b) { return same_cycle(loop(a), loop(b)); };
+    // A shared face's slot goes where its hash was (no longer needed once inserted).
     for_each_chunk(chunks, [&](Chunk& chunk, std::size_t c) {
         for (std::size_t f = 0; f < chunk.n_faces; ++f)
-            if (chunk.face_shared[f]) table.insert(chunk.face_hash[f], OwnerTable::ref(c, f), same);
+            if (chunk.face_shared[f]) chunk.face_hash[f] = table.insert(chunk.face_hash[f], OwnerTable::ref(c, f), same);
     });
     for_each_chunk(chunks, [&](Chunk& chunk, std::size_t c) {
         const std::size_t nf = chunk.n_faces;
         chunk.face_owner.resize(nf);
         chunk.face_flip.assign(nf, 0);
         for (std::size_t f = 0; f < nf; ++f) {
-            const std::uint64_t r = chunk.face_shared[f] ? table.owner(chunk.face_hash[f], OwnerTable::ref(c, f), same).ref
-                                                         : OwnerTable::ref(c, f);
+            const std::uint64_t r =
+                chunk.face_shared[f] ? table.at(static_cast<std::uint32_t>(chunk.face_hash[f])).ref : OwnerTable::ref(c, f);
             chunk.face_owner[f] = r;
             if (OwnerTable::chunk_of(r) == c) {
                 ++chunk.owned_faces;
