@@ -9,7 +9,9 @@
 // balanced, flat transitions only), installed with FlatOnlyRule (outside-root cubes
 // mirrored, so the side walls stay flat). Then the shared strongly balanced sphere grids
 // (or the --grid files) with the StrongRule: install, Incidence + clipped dual, per leaf.
-// Times are wall seconds and process CPU seconds; memory is the peak resident set size.
+// Times are wall seconds and process CPU seconds; memory is the peak resident set size
+// (the process's peak at the end of each phase: the phase that raised it is the first row
+// showing the final figure; the rows are printed after all phases ran).
 // A machine-readable line per grid: TABLE name leaves cells hexes install_cpu dual_cpu
 // sum_cpu us_per_leaf peak_MB (bench/run_install.sh runs one grid per process).
 #include <sys/resource.h>
@@ -54,11 +56,12 @@ long minor_faults() {
     return u.ru_minflt;
 }
 
-void row(const char* what, double seconds, const std::string& extra = {}) {
+// peak_mb < 0: the peak so far (a phase timed just now); else the peak at the phase's end.
+void row(const char* what, double seconds, const std::string& extra = {}, double peak_mb = -1) {
     static long faults = 0;
     const long now_faults = minor_faults();
-    std::printf("  %-28s %8.3f s  peak %7.1f MB  faults %7ld  %s\n", what, seconds, peak_rss_mb(), now_faults - faults,
-                extra.c_str());
+    std::printf("  %-28s %8.3f s  peak %7.1f MB  faults %7ld  %s\n", what, seconds, peak_mb < 0 ? peak_rss_mb() : peak_mb,
+                now_faults - faults, extra.c_str());
     faults = now_faults;
 }
 
@@ -167,10 +170,13 @@ int main(int argc, char** argv) {
         const bench::PhaseTime total = run.total();
         row("install (incl. grid checks)", run.install.wall,
             "cpu " + fmt(run.install.cpu) + "; " + std::to_string(r.complex.n_cells()) + " cells, " +
-                std::to_string(r.complex.n_vertices()) + " vertices");
-        row("Incidence", run.incidence.wall, "cpu " + fmt(run.incidence.cpu));
-        row("clipped_dual", run.clip.wall, "cpu " + fmt(run.clip.cpu) + "; " + std::to_string(run.dual.hexes.size()) +
-                                               " hexes, " + std::to_string(run.dual.errors.size()) + " non-cubes");
+                std::to_string(r.complex.n_vertices()) + " vertices",
+            run.install.peak_mb);
+        row("Incidence", run.incidence.wall, "cpu " + fmt(run.incidence.cpu), run.incidence.peak_mb);
+        row("clipped_dual", run.clip.wall,
+            "cpu " + fmt(run.clip.cpu) + "; " + std::to_string(run.dual.hexes.size()) + " hexes, " +
+                std::to_string(run.dual.errors.size()) + " non-cubes",
+            run.clip.peak_mb);
         const double us_per_leaf = 1e6 * total.cpu / static_cast<double>(grid.size());
         row("install + dual", total.wall, "cpu " + fmt(total.cpu) + "; " + fmt(us_per_leaf) + " us/leaf (cpu)");
         std::printf("TABLE %s %zu %zu %zu %.3f %.3f %.3f %.3f %.1f\n", file.filename().c_str(), grid.size(),

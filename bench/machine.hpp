@@ -39,17 +39,17 @@ inline double peak_rss_mb() {
     return static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 
-/// Wall and CPU seconds of one timed phase.
+/// Wall and CPU seconds of one timed phase, and the process's peak RSS (MB) at its end.
 struct PhaseTime {
-    double wall = 0, cpu = 0;
+    double wall = 0, cpu = 0, peak_mb = 0;
 };
 
-/// Runs f() and returns its wall and process-CPU seconds.
+/// Runs f() and returns its wall and process-CPU seconds (and the peak RSS so far).
 template <class F>
 PhaseTime time_phase(F&& f) {
     const double w = wall_seconds(), c = cpu_seconds();
     f();
-    return {wall_seconds() - w, cpu_seconds() - c};
+    return {wall_seconds() - w, cpu_seconds() - c, peak_rss_mb()};
 }
 
 }  // namespace dualhex::bench

@@ -4,3 +4,4 @@ dualhex_add_test(test_topology_dual_cell_cube SOURCES test_topology_dual_cell_cu
 dualhex_add_test(test_topology_validation SOURCES test_topology_validation.cpp DEPS dualhex::topology)
 dualhex_add_test(test_topology_properties SOURCES test_topology_properties.cpp DEPS dualhex::topology)
 dualhex_add_test(test_topology_progress SOURCES test_topology_progress.cpp DEPS dualhex::topology)
+dualhex_add_test(test_topology_csr SOURCES test_topology_csr.cpp DEPS dualhex::topology)

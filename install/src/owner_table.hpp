@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 
 #include "dualhex/topology/id_hash_table.hpp"
 
@@ -20,6 +21,8 @@ public:
     explicit OwnerTable(std::size_t n_keys) {
         std::size_t capacity = 16;
         while (capacity < 2 * n_keys) capacity *= 2;
+        // Slots are returned as 32-bit numbers (as the chunks' vertex and face ids are).
+        if (capacity > (std::size_t{1} << 32)) throw std::length_error("OwnerTable: more than 2^31 keys");
         slots_ = std::make_unique<std::atomic<std::uint64_t>[]>(capacity);
         for (std::size_t i = 0; i < capacity; ++i) slots_[i].store(0, std::memory_order_relaxed);
         mask_ = capacity - 1;
@@ -29,17 +32,19 @@ public:
     static std::size_t chunk_of(std::uint64_t ref) { return static_cast<std::size_t>(ref >> 32); }
     static std::size_t local_of(std::uint64_t ref) { return static_cast<std::size_t>(ref & 0xFFFFFFFFU); }
 
-    /// Records `r` for its key (hash `hash`), keeping the smallest ref of that key.
+    /// Records `r` for its key (hash `hash`), keeping the smallest ref of that key; returns
+    /// the key's slot (fixed: the table never rehashes), for `at` once every insert is done.
     template <class Same>
-    void insert(std::uint64_t hash, std::uint64_t r, Same&& same) {
+    std::uint32_t insert(std::uint64_t hash, std::uint64_t r, Same&& same) {
         for (std::size_t i = mix64(hash) & mask_;; i = (i + 1) & mask_) {
             std::uint64_t cur = slots_[i].load(std::memory_order_acquire);
             while (cur == 0)
-                if (slots_[i].compare_exchange_weak(cur, r + 1, std::memory_order_acq_rel)) return;
+                if (slots_[i].compare_exchange_weak(cur, r + 1, std::memory_order_acq_rel)) return static_cast<std::uint32_t>(i);
             if (!same((cur & ~kShared) - 1, r)) continue;
             for (;;) {
                 const std::uint64_t desired = std::min(cur & ~kShared, r + 1) | kShared;
-                if (desired == cur || slots_[i].compare_exchange_weak(cur, desired, std::memory_order_acq_rel)) return;
+                if (desired == cur || slots_[i].compare_exchange_weak(cur, desired, std::memory_order_acq_rel))
+                    return static_cast<std::uint32_t>(i);
             }
         }
     }
@@ -48,14 +53,11 @@ public:
         std::uint64_t ref = 0;  ///< the smallest ref of the key
         bool shared = false;    ///< inserted by more than one chunk
     };
-    /// The owner of r's key; every insert must have finished.
-    template <class Same>
-    [[nodiscard]] Owner owner(std::uint64_t hash, std::uint64_t r, Same&& same) const {
-        for (std::size_t i = mix64(hash) & mask_;; i = (i + 1) & mask_) {
-            const std::uint64_t cur = slots_[i].load(std::memory_order_relaxed);
-            if (cur == 0) return {r, false};  // unreachable after insert(r)
-            if (same((cur & ~kShared) - 1, r)) return {(cur & ~kShared) - 1, (cur & kShared) != 0};
-        }
+    /// The owner of the key in `slot` (what insert returned); every insert must have
+    /// finished. No hashing or key comparison: one load.
+    [[nodiscard]] Owner at(std::uint32_t slot) const {
+        const std::uint64_t cur = slots_[slot].load(std::memory_order_relaxed);
+        return {(cur & ~kShared) - 1, (cur & kShared) != 0};
     }
 
 private:

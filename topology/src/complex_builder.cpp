@@ -130,4 +130,9 @@ CellComplex ComplexBuilder::build() && {
                        std::move(cell_halffaces_));
 }
 
+ComplexBuilder::Parts ComplexBuilder::take_parts() && {
+    return {std::move(positions_), std::move(face_offsets_), std::move(face_loops_), std::move(cell_offsets_),
+            std::move(cell_halffaces_)};
+}
+
 }  // namespace dualhex

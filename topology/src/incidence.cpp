@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
+#include <type_traits>
 
 #include <tbb/parallel_invoke.h>
 
@@ -23,124 +25,76 @@ struct Stamper {
     std::vector<std::uint32_t> stamp;
 };
 
-// Rows of one relation are built from (row, item) pairs. One pair buffer per item type is
-// reused from relation to relation (cleared, its pages stay mapped: no fresh page faults),
-// reserved to an upper bound up front (untouched capacity costs no resident memory,
-// regrowth copies do).
-template <class T>
-using Pairs = std::vector<std::pair<Row, T>>;
+// Each relation's rows come from a generator of (row, item) pairs run twice, count then
+// place (Csr::from_generator): no pair buffer, which with both groups below at once was
+// the largest transient of the whole install + dual (two buffers of 8 bytes per pair).
 
-// Appends (v, row) for the distinct items of a short list (first occurrence); long lists
-// go through the stamper.
-template <class H, class T>
-void distinct(std::span<const H> items, T row_item, std::size_t row, Stamper<H>& stamper, Pairs<T>& out) {
+// Emits (item, row_item) for the distinct items of a short list (first occurrence); long
+// lists go through the stamper, made on first need (a new one per pass: its stamps are rows).
+template <class H, class T, class Emit>
+void distinct(std::span<const H> items, T row_item, std::size_t row, std::size_t n_items, std::optional<Stamper<H>>& stamper,
+              Emit& emit) {
     const std::size_t n = items.size();
     if (n <= 16) {
         for (std::size_t i = 0; i < n; ++i) {
             bool seen = false;
             for (std::size_t j = 0; j < i && !seen; ++j) seen = items[j] == items[i];
-            if (!seen) out.emplace_back(items[i].idx, row_item);
+            if (!seen) emit(static_cast<Row>(items[i].idx), row_item);
         }
         return;
     }
+    if (!stamper) stamper.emplace(n_items);
     for (H item : items)
-        if (stamper.first(item, row)) out.emplace_back(item.idx, row_item);
+        if (stamper->first(item, row)) emit(static_cast<Row>(item.idx), row_item);
 }
 
 }  // namespace
 
 Incidence::Incidence(const CellComplex& k) : complex_(&k) {
     const std::size_t nv = k.n_vertices(), ne = k.n_edges(), nf = k.n_faces(), nc = k.n_cells();
-    const std::size_t n_loop = k.face_loops().size(), n_halffaces = k.all_cell_halffaces().size();
     const auto& cell_offsets = k.cell_offsets();
     const auto& halffaces = k.all_cell_halffaces();
 
-    // Two independent groups of relations (each reusing its own pair buffer) are built
-    // concurrently; each relation is built exactly as alone, so the result does not depend
-    // on the threads.
+    // Two independent groups of relations are built concurrently; each relation is built
+    // exactly as alone, so the result does not depend on the threads.
     const auto by_faces = [&] {
-        {
-            Pairs<EdgeHandle> ve;
-            ve.reserve(2 * ne);
+        vertex_edges_ = Csr<EdgeHandle>::from_generator(nv, [&](auto&& emit) {
             for (std::size_t e = 0; e < ne; ++e) {
                 const auto [a, b] = k.edge_vertices(EdgeHandle(e));
-                ve.emplace_back(a.idx, EdgeHandle(e));
-                if (b != a) ve.emplace_back(b.idx, EdgeHandle(e));
+                emit(static_cast<Row>(a.idx), EdgeHandle(e));
+                if (b != a) emit(static_cast<Row>(b.idx), EdgeHandle(e));
             }
-            vertex_edges_ = Csr<EdgeHandle>::from_pairs(nv, ve);
-        }
-        Pairs<FaceHandle> vf;  // then edge -> faces
-        vf.reserve(n_loop);
-        {
-            Stamper<VertexHandle> seen(0);
-            for (std::size_t f = 0; f < nf; ++f) {
-                const FaceHandle fh(f);
-                const auto loop = k.face_vertices(fh);
-                if (loop.size() > 16 && seen.stamp.empty()) seen = Stamper<VertexHandle>(nv);
-                distinct(loop, fh, f, seen, vf);
-            }
-            vertex_faces_ = Csr<FaceHandle>::from_pairs(nv, vf);
-        }
-        {
-            Pairs<FaceHandle>& ef = vf;
-            ef.clear();
-            Stamper<EdgeHandle> seen(0);
-            for (std::size_t f = 0; f < nf; ++f) {
-                const FaceHandle fh(f);
-                const auto edges = k.face_edges(fh);
-                if (edges.size() > 16 && seen.stamp.empty()) seen = Stamper<EdgeHandle>(ne);
-                distinct(edges, fh, f, seen, ef);
-            }
-            edge_faces_ = Csr<FaceHandle>::from_pairs(ne, ef);
-        }
-        Pairs<FaceHandle>().swap(vf);
-        {
-            Pairs<HalfFaceHandle> fh_pairs;
-            fh_pairs.reserve(n_halffaces);
-            for (HalfFaceHandle h : halffaces) fh_pairs.emplace_back(h.face().idx, h);
-            face_halffaces_ = Csr<HalfFaceHandle>::from_pairs(nf, fh_pairs);
-        }
+        });
+        vertex_faces_ = Csr<FaceHandle>::from_generator(nv, [&](auto&& emit) {
+            std::optional<Stamper<VertexHandle>> seen;
+            for (std::size_t f = 0; f < nf; ++f) distinct(k.face_vertices(FaceHandle(f)), FaceHandle(f), f, nv, seen, emit);
+        });
+        edge_faces_ = Csr<FaceHandle>::from_generator(ne, [&](auto&& emit) {
+            std::optional<Stamper<EdgeHandle>> seen;
+            for (std::size_t f = 0; f < nf; ++f) distinct(k.face_edges(FaceHandle(f)), FaceHandle(f), f, ne, seen, emit);
+        });
+        face_halffaces_ = Csr<HalfFaceHandle>::from_generator(nf, [&](auto&& emit) {
+            for (HalfFaceHandle h : halffaces) emit(static_cast<Row>(h.face().idx), h);
+        });
     };
-    const auto by_cells = [&] {
-        // Upper bound of the vertex (edge) references of all cells: the loop sizes of their faces.
-        std::size_t cell_refs = 0;
-        for (HalfFaceHandle h : halffaces) {
-            const auto& fo = k.face_offsets();
-            cell_refs += fo[h.face().index() + 1] - fo[h.face().index()];
-        }
-        Pairs<CellHandle> fc;  // then vertex -> cells, edge -> cells
-        fc.reserve(std::max(n_halffaces, cell_refs));
-        {
+    // The faces of cell c, then each face's vertices (edges), deduplicated per cell.
+    const auto cell_items = [&](std::size_t n_items, auto&& items_of_face) {
+        return [&, n_items, items_of_face](auto&& emit) {
+            Stamper<std::remove_cvref_t<decltype(items_of_face(FaceHandle(0))[0])>> in_cell(n_items);
             for (std::size_t c = 0; c < nc; ++c)
                 for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
-                    fc.emplace_back(halffaces[i].face().idx, CellHandle(c));
-            face_cells_ = Csr<CellHandle>::from_pairs(nf, fc);
-        }
-        {
-            Pairs<CellHandle>& vc = fc;
-            vc.clear();
-            Stamper<VertexHandle> in_cell(nv);
-            for (std::size_t c = 0; c < nc; ++c) {
-                const CellHandle ch(c);
+                    for (auto item : items_of_face(halffaces[i].face()))
+                        if (in_cell.first(item, c)) emit(static_cast<Row>(item.idx), CellHandle(c));
+        };
+    };
+    const auto by_cells = [&] {
+        face_cells_ = Csr<CellHandle>::from_generator(nf, [&](auto&& emit) {
+            for (std::size_t c = 0; c < nc; ++c)
                 for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
-                    for (VertexHandle v : k.face_vertices(halffaces[i].face()))
-                        if (in_cell.first(v, c)) vc.emplace_back(v.idx, ch);
-            }
-            vertex_cells_ = Csr<CellHandle>::from_pairs(nv, vc);
-        }
-        {
-            Pairs<CellHandle>& ec = fc;
-            ec.clear();
-            Stamper<EdgeHandle> in_cell(ne);
-            for (std::size_t c = 0; c < nc; ++c) {
-                const CellHandle ch(c);
-                for (std::uint32_t i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
-                    for (EdgeHandle e : k.face_edges(halffaces[i].face()))
-                        if (in_cell.first(e, c)) ec.emplace_back(e.idx, ch);
-            }
-            edge_cells_ = Csr<CellHandle>::from_pairs(ne, ec);
-        }
-        Pairs<CellHandle>().swap(fc);
+                    emit(static_cast<Row>(halffaces[i].face().idx), CellHandle(c));
+        });
+        vertex_cells_ = Csr<CellHandle>::from_generator(nv, cell_items(nv, [&](FaceHandle f) { return k.face_vertices(f); }));
+        edge_cells_ = Csr<CellHandle>::from_generator(ne, cell_items(ne, [&](FaceHandle f) { return k.face_edges(f); }));
     };
     tbb::parallel_invoke(by_faces, by_cells);
 

@@ -69,6 +69,19 @@ public:
     /// The complex, moving the arrays out (the builder is left empty-ish: do not reuse).
     [[nodiscard]] CellComplex build() &&;
 
+    /// The arrays as built, for callers that merge several builders (install's parallel
+    /// welding), which free each part as soon as it is merged.
+    struct Parts {
+        std::vector<LatticePoint> positions;
+        std::vector<std::uint32_t> face_offsets;
+        std::vector<VertexHandle> face_loops;
+        std::vector<std::uint32_t> cell_offsets;
+        std::vector<HalfFaceHandle> cell_halffaces;
+    };
+    /// The arrays moved out (the builder is left empty: do not reuse; its welding tables go
+    /// with it, so a caller keeping only the parts keeps none of the tables' memory).
+    [[nodiscard]] Parts take_parts() &&;
+
 private:
     std::vector<LatticePoint> positions_;
     std::vector<std::uint32_t> face_offsets_{0};

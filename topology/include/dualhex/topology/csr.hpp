@@ -32,6 +32,22 @@ public:
         return csr;
     }
 
+    /// The rows from_pairs builds from the (row, item) pairs that `generate(emit)` emits by
+    /// calling emit(row, item), in the same order, without storing the pairs (their buffer
+    /// was the peak of Incidence's memory): `generate` runs twice, once to count the items
+    /// per row and once to place them, and must emit the same pairs both times.
+    template <class Generate>
+    static Csr from_generator(std::size_t n_rows, Generate&& generate) {
+        Csr csr;
+        csr.offsets_.assign(n_rows + 1, 0);
+        generate([&](std::uint32_t row, const T&) { ++csr.offsets_[row + 1]; });
+        for (std::size_t r = 0; r < n_rows; ++r) csr.offsets_[r + 1] += csr.offsets_[r];
+        csr.items_.resize(csr.offsets_[n_rows]);
+        std::vector<std::uint32_t> cursor(csr.offsets_.begin(), csr.offsets_.end() - 1);
+        generate([&](std::uint32_t row, const T& item) { csr.items_[cursor[row]++] = item; });
+        return csr;
+    }
+
 private:
     std::vector<std::uint32_t> offsets_{0};
     std::vector<T> items_;
