@@ -5,63 +5,24 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include "weak_star_leaves.hpp"
+#include "weak_star_pair.hpp"
 #include "window_check.hpp"
 
-namespace dualhex {
+namespace dualhex::weak_stars {
 namespace {
-
-using namespace weak_stars;
-
-// One leaf at v with its context bits split: forced (a value), shared or private (an index
-// into the pair's shared / the leaf's private list).
-struct LeafBits {
-    LeafAtV at;
-    int fixed = 0;  // context bits forced by the configuration
-    std::vector<std::pair<int, int>> shared, own;  // (context bit, index)
-    int n_own = 0;
-    /// "a fine => b fine" between its own statuses or one own and one shared: variable
-    /// codes, >= 0 own index, < 0: -1 - shared index.
-    std::vector<std::pair<int, int>> implies;
-    bool hex_corner = false;  // a plain level-(m+3) cube with a corner at v
-};
-
-struct Pair {
-    LatticePoint v;  // relative to g
-    std::vector<LeafBits> leaves;
-    int n_shared = 0;
-    std::vector<std::pair<int, int>> implies;  // between shared statuses (indices)
-};
-
-// fine_implies among the free statuses read, closed under chains through statuses not read
-// (a fine cell's ancestors are fine, and so on up).
-std::vector<std::pair<Status, Status>> implications(const std::map<Status, std::set<int>>& readers) {
-    std::vector<std::pair<Status, Status>> out;
-    for (const auto& [x, who] : readers) {
-        std::set<Status> reached, frontier{x};
-        while (!frontier.empty()) {
-            std::set<Status> next;
-            for (const Status& y : frontier)
-                if (y.first > -1)
-                    for (const Status& z : fine_implies(y))
-                        if (reached.insert(z).second) next.insert(z);
-            frontier = std::move(next);
-        }
-        for (const Status& z : reached)
-            if (readers.count(z)) out.push_back({x, z});
-    }
-    return out;
-}
 
 bool holds(const std::vector<std::pair<int, int>>& implies, const auto& value) {
     return std::all_of(implies.begin(), implies.end(), [&](const auto& i) { return !value(i.first) || value(i.second); });
 }
+
+}  // namespace
 
 Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_t>& index, const LatticePoint& v,
            const LatticePoint& g, const std::array<Leaf, 8>& leaves) {
@@ -112,7 +73,7 @@ Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_
 }
 
 // Per shared assignment, each leaf's distinct pieces with a witness context; their products.
-std::map<std::vector<int>, std::vector<int>> stars_of(const WeakStarInfluence& inf, const Pair& p, long& assignments) {
+Stars stars_by_product(const WeakStarInfluence& inf, const Pair& p, long& assignments) {
     std::map<std::vector<int>, std::vector<int>> out;  // pieces per leaf -> contexts per leaf
     for (std::uint64_t sa = 0; sa < (std::uint64_t{1} << p.n_shared); ++sa) {
         if (!holds(p.implies, [sa](int i) { return ((sa >> i) & 1U) != 0; })) continue;
@@ -151,6 +112,13 @@ std::map<std::vector<int>, std::vector<int>> stars_of(const WeakStarInfluence& i
     }
     return out;
 }
+
+}  // namespace dualhex::weak_stars
+
+namespace dualhex {
+namespace {
+
+using namespace weak_stars;
 
 // The cells of t (placed at origin + scale * p) that have v as a vertex, translated so that
 // v is the origin.
@@ -232,6 +200,8 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
     tbb::enumerable_thread_specific<detail::TemplateCache> caches([&] { return detail::TemplateCache(library); });
     std::mutex tally;
     std::atomic<long> failed{0};
+    std::optional<PieceCubes> cubes;
+    if (!options.count_only && !options.reference_product) cubes = piece_cubes(inf);
     for (int t = 0; t < 8; ++t) {
         if (!((options.parities >> t) & 1U)) continue;
         const std::array<int, 3> parity{t & 1, (t >> 1) & 1, (t >> 2) & 1};
@@ -251,12 +221,24 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
                     local.joint_bound += std::ldexp(1.0, p.n_shared);
                     local.max_shared = std::max(local.max_shared, p.n_shared);
                     if (options.count_only) return;
-                    for (const auto& [pieces, contexts] : stars_of(inf, p, local.assignments)) {
+                    Stars stars;
+                    try {
+                        stars = options.reference_product ? stars_by_product(inf, p, local.assignments)
+                                                          : stars_by_search(*cubes, p, local.search_nodes, options.search_limit);
+                    } catch (const SearchTooLarge& e) {
+                        ++local.failed;
+                        ++failed;
+                        if (local.failures.size() < 10) local.failures.push_back(describe(parity, p, std::vector<int>(p.leaves.size(), -1), e.what()));
+                        return;
+                    }
+                    for (const auto& [pieces, contexts] : stars) {
+                        if (options.stars) options.stars(v - g, pieces);
                         if (std::all_of(pieces.begin(), pieces.end(), [](int x) { return x == -1; })) {
                             ++local.empty;
                             continue;
                         }
                         ++local.stars;
+                        if (!options.build_stars) continue;
                         const ConfigurationReport r =
                             detail::check(0, [&] { return build_star(inf, rule, cache, p, v, contexts); }, at_v, away_from_v);
                         if (r.ok() && r.checked_vertices == 1) {
@@ -272,6 +254,7 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
             const std::lock_guard lock(tally);
             result.pairs += local.pairs;
             result.assignments += local.assignments;
+            result.search_nodes += local.search_nodes;
             result.stars += local.stars;
             result.empty += local.empty;
             result.joint_bound += local.joint_bound;

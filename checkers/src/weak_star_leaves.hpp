@@ -132,7 +132,9 @@ inline std::array<Status, 7> fine_implies(const Status& x) {
 // names being forced not fine. Memoised per configuration.
 class Forcing {
 public:
-    explicit Forcing(const std::array<Leaf, 8>& leaves) : leaves_(leaves) {}
+    /// `one_level_finer_forces_fine`: a wrong rule, for the test of check_weak_star_assumptions.
+    explicit Forcing(const std::array<Leaf, 8>& leaves, bool one_level_finer_forces_fine = false)
+        : leaves_(leaves), finer_(one_level_finer_forces_fine ? 1 : 2) {}
     std::optional<bool> operator()(const Status& x) {
         if (const auto it = memo_.find(x); it != memo_.end()) return it->second;
         const std::optional<bool> f = compute(x);
@@ -144,7 +146,7 @@ private:
     std::optional<bool> compute(const Status& x) {
         const auto& [k, cell] = x;
         for (const Leaf& leaf : leaves_) {
-            if (leaf.level >= k + 1 && ancestor(leaf.cell, leaf.level - k) == cell) return leaf.level >= k + 2;
+            if (leaf.level >= k + 1 && ancestor(leaf.cell, leaf.level - k) == cell) return leaf.level >= k + finer_;
             if (leaf.level <= k && ancestor(cell, k - leaf.level) == leaf.cell) return false;
         }
         for (const Leaf& leaf : leaves_)
@@ -155,6 +157,7 @@ private:
         return std::nullopt;
     }
     const std::array<Leaf, 8>& leaves_;
+    const int finer_;
     std::map<Status, std::optional<bool>> memo_;
 };
 

@@ -85,8 +85,10 @@ struct WeakStarReads {
 [[nodiscard]] std::vector<WeakStarReads> weak_star_reads(const WeakStarInfluence& influence);
 
 /// The star enumeration of W7 (relevant bits only): for every (v, configuration) of
-/// weak_star_reads, every assignment of the free statuses read by two or more leaves at v,
-/// and per leaf every distinct piece over its private ones; each distinct tuple of pieces
+/// weak_star_reads, every distinct tuple of the leaves' pieces over the assignments of the
+/// free statuses satisfying the implications, found by a search over partial assignments
+/// (W9 (vii)) or, with reference_product, as every assignment of the statuses read by two
+/// or more leaves times per leaf every distinct piece over its private ones; each tuple
 /// (a star: the whole cells at v of the leaves at v) is built and v is checked by dualhex's
 /// validator (6 edges, octahedral link, edges of 4 cells in one cycle, faces of two cells
 /// with opposite sides, a cube as dual cell). A tuple with no cell at v (v is not a vertex)
@@ -94,7 +96,8 @@ struct WeakStarReads {
 struct WeakStarCheck {
     std::string rule;
     long pairs = 0;        ///< (v, configuration) pairs
-    long assignments = 0;  ///< joint assignments of shared statuses enumerated
+    long assignments = 0;  ///< joint assignments of shared statuses enumerated (reference product)
+    long search_nodes = 0;  ///< search nodes fixing a leaf's piece (the search, W9 (vii))
     long stars = 0;        ///< distinct stars built and checked (per pair)
     long empty = 0;        ///< tuples with no cell at v
     long passed = 0, failed = 0;
@@ -103,7 +106,7 @@ struct WeakStarCheck {
     double joint_bound = 0;
     int max_shared = 0;
     std::vector<std::string> failures;  ///< the first few, described
-    [[nodiscard]] bool all_passed() const { return stars > 0 && failed == 0; }
+    [[nodiscard]] bool all_passed() const { return stars > 0 && failed == 0 && passed == stars; }
 };
 
 struct WeakStarOptions {
@@ -112,6 +115,16 @@ struct WeakStarOptions {
     std::function<bool(const LatticePoint&)> vertex;
     long stop_after = 0;  ///< stop once this many stars failed (0: never; counts then partial)
     bool count_only = false;  ///< only the pairs, joint_bound and max_shared (no stars)
+    /// The reference enumeration (every joint assignment of the shared statuses, times each
+    /// leaf's private ones; W9 (vi)) instead of the search (W9 (vii)); out of reach at 111.
+    bool reference_product = false;
+    /// The search's nodes at one (vertex, configuration) pair beyond which it gives up on
+    /// the pair, counted as a failure (so a run that gives up never passes).
+    long search_limit = 5'000'000;
+    /// Optional: told every distinct star (v relative to g, the piece per leaf; -1: no cell
+    /// at v) before it is checked. Called from several threads at once.
+    std::function<void(const LatticePoint&, const std::vector<int>&)> stars;
+    bool build_stars = true;  ///< false: only enumerate and count them (stars, empty; none checked)
 };
 
 /// Runs it (oneTBB over the candidate vertices).

@@ -1,0 +1,90 @@
+#pragma once
+// Internal: one (vertex, configuration) pair of the star run with its free statuses, and
+// the two enumerations of its stars (compositional_weak_star_check.cpp: the product of
+// shared and private assignments, the reference; compositional_weak_star_search.cpp: the
+// backtracking search over partial assignments, proofs/README.md W9 (vi)-(vii)).
+#include <cstdint>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+#include "weak_star_leaves.hpp"
+
+namespace dualhex::weak_stars {
+
+// One leaf at v with its context bits split: forced (a value), shared or private (an index
+// into the pair's shared / the leaf's private list).
+struct LeafBits {
+    LeafAtV at;
+    int fixed = 0;  // context bits forced by the configuration
+    std::vector<std::pair<int, int>> shared, own;  // (context bit, index)
+    int n_own = 0;
+    /// "a fine => b fine" between its own statuses or one own and one shared: variable
+    /// codes, >= 0 own index, < 0: -1 - shared index.
+    std::vector<std::pair<int, int>> implies;
+    bool hex_corner = false;  // a plain level-(m+3) cube with a corner at v
+};
+
+struct Pair {
+    LatticePoint v;  // relative to g
+    std::vector<LeafBits> leaves;
+    int n_shared = 0;
+    std::vector<std::pair<int, int>> implies;  // between shared statuses (indices)
+};
+
+// fine_implies among the free statuses read, closed under chains through statuses not read
+// (a fine cell's ancestors are fine, and so on up).
+inline std::vector<std::pair<Status, Status>> implications(const std::map<Status, std::set<int>>& readers) {
+    std::vector<std::pair<Status, Status>> out;
+    for (const auto& [x, who] : readers) {
+        std::set<Status> reached, frontier{x};
+        while (!frontier.empty()) {
+            std::set<Status> next;
+            for (const Status& y : frontier)
+                if (y.first > -1)
+                    for (const Status& z : fine_implies(y))
+                        if (reached.insert(z).second) next.insert(z);
+            frontier = std::move(next);
+        }
+        for (const Status& z : reached)
+            if (readers.count(z)) out.push_back({x, z});
+    }
+    return out;
+}
+
+Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_t>& index, const LatticePoint& v,
+           const LatticePoint& g, const std::array<Leaf, 8>& leaves);
+
+/// The distinct stars of a pair: pieces per leaf -> a witness context per leaf.
+using Stars = std::map<std::vector<int>, std::vector<int>>;
+
+/// The reference: every shared assignment satisfying the implications, times each leaf's
+/// private ones (`assignments` counts the shared assignments).
+Stars stars_by_product(const WeakStarInfluence& inf, const Pair& p, long& assignments);
+
+/// Per position of the influence table, the piece on every subcube of its relevant bits
+/// (each bit 0, 1 or open): the piece if it is constant there, else kOpen and the bit to
+/// branch on.
+struct PieceCubes {
+    static constexpr int kOpen = -3;
+    struct Position {
+        std::vector<int> bits;  // the relevant context bits, ascending
+        std::vector<int> piece;  // by ternary index (digit j: bits[j] is 0, 1 or 2 = open)
+        std::vector<std::int8_t> branch;  // digit to branch on where piece is kOpen
+    };
+    std::vector<Position> positions;
+};
+PieceCubes piece_cubes(const WeakStarInfluence& inf);
+
+/// The same set of stars by a search: leaf by leaf, a leaf's piece fixed as soon as the
+/// statuses assigned so far make it constant (so a status it does not read given the others
+/// is never branched on), implications propagated on every assignment, and a state (the
+/// pieces so far, the assigned statuses the remaining leaves read or are tied to) met
+/// before skipped. `nodes` counts the search nodes where a leaf's piece is fixed; over
+/// `limit` of them at one pair it throws SearchTooLarge.
+struct SearchTooLarge : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit);
+
+}  // namespace dualhex::weak_stars
