@@ -271,6 +271,24 @@ TEST_F(Hostile, ACellPinchedAtAVertexIsNoSphere) {
     expect_rejected(pinched, "cell 0 has V - E + F = 1, not 2", "cube pinched at a vertex");
 }
 
+// A cell with no faces is rejected by V - E + F = 0 (no separate "no faces" check any more).
+TEST_F(Hostile, ACellWithoutFacesIsNoSphere) {
+    std::string empty = cube(0, 1);
+    empty.replace(empty.find("claim subdivision"), 0, "c\n");
+    expect_rejected(empty, "cell 1 has V - E + F = 0, not 2", "a cell row without faces");
+}
+
+// A torus is closed: with one cell removed, the first face left in one cell is named.
+TEST_F(Hostile, ATorusWithACellRemovedNamesAFaceOfOneCell) {
+    Torus t = mask0_torus();
+    for (std::size_t i = t.lines.size(); i-- > 0;)
+        if (t.lines[i].rfind("c ", 0) == 0) {
+            t.lines.erase(t.lines.begin() + static_cast<long>(i));
+            break;
+        }
+    expect_rejected(join(t.lines), "is in one cell, but a torus is closed", "a torus cell removed");
+}
+
 TEST_F(Hostile, ATorusCellSpanningHalfThePeriodIsRejected) {
     // the mask-0 torus with its x planes 0, 12, 24, 36 moved to 0, 1, 2, X: for X = 25 a valid
     // irregular torus; for X = 26 the cells between x = 2 and 26 span half the period 48, so

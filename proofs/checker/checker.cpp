@@ -1,18 +1,14 @@
-// dualhex-proof-checker MANIFEST | --file CERTIFICATE_FILE: the independent checker of dualhex
-// certificates (format, claims: proofs/README.md); C++ standard library only. Exit 0 and
-// "VERIFIED: ..." iff all parse and hold; else each rejection is printed, exit 1 (2: usage).
+// dualhex-proof-checker MANIFEST | --file FILE: the independent checker of dualhex certificates
+// (proofs/README.md), standard C++ only. Exit 0 and VERIFIED iff all hold; else 1 (2: usage).
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <locale>
 #include <map>
-#include <numeric>
 #include <set>
 #include <sstream>
 #include <string>
@@ -26,8 +22,7 @@ __extension__ typedef __int128 i128;  // GCC and Clang
 using P3 = std::array<i64, 3>;
 using Ids = vector<int>;
 using Pairs = vector<pair<int, int>>;
-// Coordinates, box bounds, periods lie in [-2^19, 2^19]: differences are at most 2^20, cross
-// products 2^41, a face's vector area (62 of them) 2^47; larger ones in 128 bits (README, Bounds).
+// Coordinates, bounds, periods in [-2^19, 2^19]: cross products < 2^41, areas < 2^47, else i128
 constexpr i64 kMaxCoord = i64{1} << 19;
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{256} << 20;    // one file
 constexpr std::uintmax_t kMaxManifestBytes = std::uintmax_t{1} << 30;  // a manifest's files
@@ -43,9 +38,9 @@ string str(i128 v) {  // in decimal
     return v < 0 ? "-" + str(-v) : (v > 9 ? str(v / 10) : "") + char('0' + int(v % 10));
 }
 template <class T> int len(const T& v) { return static_cast<int>(v.size()); }
-bool connected(size_t n, const Pairs& links) {  // the graph on 0..n-1 (n > 0); union-find
+bool connected(size_t n, const Pairs& links) {  // the graph on 0..n-1; union-find
     Ids root(n);
-    std::iota(root.begin(), root.end(), 0);
+    for (int i = 0; i < len(root); ++i) root[i] = i;
     auto find = [&](int x) {
         while (root[x] != x) x = root[x] = root[root[x]];
         return x;
@@ -55,12 +50,7 @@ bool connected(size_t n, const Pairs& links) {  // the graph on 0..n-1 (n > 0); 
         if (find(i) != find(0)) return false;
     return true;
 }
-
-// ---------------------------------------------------------------- reading
-struct Line {
-    int number = 0;
-    vector<string> tok;
-};
+struct Line { int number = 0; vector<string> tok; };  // reading: a line's number, its tokens
 vector<Line> tokenize(const string& text) {  // non-empty lines, '#' comments removed, split
     vector<Line> out;
     std::istringstream in(text);
@@ -113,8 +103,7 @@ void read_domain(Cert& c, const Line& l) {
     }
     if (!box && c.hi[0] % 2) fail("line ", l.number, ": bad torus period (odd)");
 }
-// One line: a row (v x y z | f VERTEX-IDS | c SIGNED-FACE-IDS, ids counting the rows before
-// it from 0) or a section; a section other than `claim` is given at most once.
+// A row (v x y z | f VERTEX-IDS | c SIGNED-FACE-IDS) or a section (given once, `claim` per claim)
 void read_line(Cert& c, const Line& l, set<string>& seen) {
     static const set<string> known{"v", "f", "c", "name", "kind", "domain", "claim", "covers"};
     const string& key = l.tok[0];
@@ -137,8 +126,7 @@ void read_line(Cert& c, const Line& l, set<string>& seen) {
     for (size_t i = 0; key == "covers" && i < args.size(); ++i)
         c.covers.push_back(to_int(args[i], l.number));
 }
-// The certificate from L[at] (its `dualhex-certificate 2` line) to its `end`; at: the line
-// after it, or on a Reject the failing line.
+// The certificate from L[at] to its `end`; at: then the line after it (on a Reject the failing one)
 Cert parse(const vector<Line>& L, size_t& at) {
     Cert c;
     if (L[at].tok != vector<string>{"dualhex-certificate", "2"})
@@ -151,9 +139,7 @@ Cert parse(const vector<Line>& L, size_t& at) {
         if (!seen.count(s)) fail("missing section '", s, "'");
     return c;
 }
-
-// ---------------------------------------------------------------- arithmetic
-P3 sub(P3 a, P3 b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+P3 sub(P3 a, P3 b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }  // exact arithmetic
 P3 cross(P3 a, P3 b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
@@ -174,15 +160,12 @@ P3 nearest(const Cert& c, P3 p, P3 ref) {  // torus: the copy of p nearest to re
     }
     return p;
 }
-
-// ---------------------------------------------------------------- combinatorics
-struct Mesh {  // the incidences derived from the lists
+struct Mesh {  // combinatorics: the incidences derived from the lists
     Pairs edges;                  // (a, b), a < b
     vector<Ids> face_edges;       // face -> its loop edges, edge i from loop[i] to loop[i + 1]
     vector<Pairs> edge_uses;      // edge -> (face, index in its loop)
     vector<Pairs> face_cells;     // face -> (cell, side)
     vector<Ids> v_faces;          // vertex -> its faces
-    Ids v_degree;                 // vertex -> its number of edges
     vector<char> bdry_v, bdry_e;  // on a boundary face (a face of one cell)
     string edge_name(int e) const { return cat("edge ", edges[e].first, "-", edges[e].second); }
 };
@@ -191,7 +174,6 @@ void check_faces(const Cert& c, Mesh& m) {
     map<pair<int, int>, int> edge_id;
     map<Ids, int> face_by_set;
     m.v_faces.resize(c.pos.size());
-    m.v_degree.resize(c.pos.size());
     for (int f = 0; f < len(c.faces); ++f) {
         const Ids& l = c.faces[f];
         Ids s = l;
@@ -207,18 +189,14 @@ void check_faces(const Cert& c, Mesh& m) {
             m.face_edges[f].push_back(e->second);
             m.edge_uses[e->second].push_back({f, i});
             m.v_faces[l[i]].push_back(f);
-            m.v_degree[l[i]] += fresh;
-            m.v_degree[l[(i + 1) % n]] += fresh;
         }
     }
 }
-// A cell is a closed, consistently oriented, connected surface with V - E + F = 2: a sphere,
-// hence a manifold at every vertex (proofs/README.md, "The checker"). Records faces' cells.
+// A cell: closed, oriented, connected, V - E + F = 2: a sphere, so a manifold (README, The checker)
 void check_cell(const Cert& c, Mesh& m, int k) {
     map<pair<int, int>, int> owner;  // directed edge -> index of the half-face in the cell
     set<int> faces, vertices;
     const Ids& hs = c.cells[k];
-    if (hs.empty()) fail("cell ", k, " has no faces");
     for (int i = 0; i < len(hs); ++i) {
         if (!faces.insert(hs[i] / 2).second) fail("cell ", k, " lists face ", hs[i] / 2, " twice");
         m.face_cells[hs[i] / 2].push_back({k, hs[i] % 2});
@@ -240,23 +218,20 @@ void check_cell(const Cert& c, Mesh& m, int k) {
     const int chi = len(vertices) - len(owner) / 2 + len(hs);
     if (chi != 2) fail("cell ", k, " has V - E + F = ", chi, ", not 2 (not a sphere)");
 }
-// Every face in 1 or 2 cells, in 2 with opposite sides; a torus closed; every vertex at its
-// own position in the domain and on a face. Records the boundary (faces of one cell).
+// Faces in 1 or 2 cells (2: opposite sides; torus: closed); vertices distinct, in the domain, used
 void check_conformity(const Cert& c, Mesh& m) {
     m.bdry_v.assign(c.pos.size(), 0);
     m.bdry_e.assign(m.edges.size(), 0);
     set<P3> seen;
-    int boundary_faces = 0;
     for (int f = 0; f < len(c.faces); ++f) {
         const Pairs& fc = m.face_cells[f];
         if (fc.empty() || fc.size() > 2) fail("face ", f, " belongs to ", fc.size(), " cells");
         if (fc.size() == 2 && fc[0].second == fc[1].second) fail("face ", f, " used twice alike");
         if (fc.size() == 2) continue;
-        ++boundary_faces;
+        if (c.domain == "torus") fail("face ", f, " is in one cell, but a torus is closed");
         for (int v : c.faces[f]) m.bdry_v[v] = 1;
         for (int e : m.face_edges[f]) m.bdry_e[e] = 1;
     }
-    if (c.domain == "torus" && boundary_faces) fail("the torus has faces in one cell");
     for (int v = 0; v < len(c.pos); ++v) {
         for (int a = 0; a < 3; ++a)  // in [lo, hi], on a torus in [0, period)
             if (c.pos[v][a] < c.lo[a] || c.pos[v][a] > c.hi[a] - (c.domain == "torus"))
@@ -265,14 +240,11 @@ void check_conformity(const Cert& c, Mesh& m) {
         if (m.v_faces[v].empty()) fail("vertex ", v, " is on no face");
     }
 }
-
-// ---------------------------------------------------------------- claim subdivision
-struct FaceFan {       // face f as a surface: the fan of triangles (l0, lj, lj+1) of its loop l
+struct FaceFan {  // subdivision: face f as the fan of triangles (l0, lj, lj+1) of its loop l
     vector<P3> sheet;  // at loop edge i (li -> li+1): the normal of the fan there, as listed
     P3 area{0, 0, 0};  // twice the vector area: the sum of the triangles' normals
 };
-// The sheet at an edge: the normal of its fan triangle or, if that is degenerate, the plane's
-// normal of a planar face (its non-degenerate triangles' normals in one direction).
+// The sheet at an edge: its fan triangle's normal or, if degenerate, that of a planar face's plane
 FaceFan face_fan(const Cert& c, int f) {
     const Ids& l = c.faces[f];
     const int n = len(l);
@@ -295,9 +267,9 @@ FaceFan face_fan(const Cert& c, int f) {
     }
     return fan;
 }
-// Positive volumes summing to the domain's; torus cells span under half the period. 6V = sum
-// over the faces of l0 . area (l0 relative to the cell's first vertex; README, "The checker").
+// Positive volumes summing to the domain's, 6V = sum of l0 . area (README); torus: spans < P/2
 void check_volumes(const Cert& c, const vector<FaceFan>& fans) {
+    const bool torus = c.domain == "torus";
     i128 total = 0;
     for (int k = 0; k < len(c.cells); ++k) {
         const P3 ref = c.pos[c.faces[c.cells[k][0] / 2][0]];
@@ -312,9 +284,8 @@ void check_volumes(const Cert& c, const vector<FaceFan>& fans) {
                 }
             vol += (h % 2 ? -1 : 1) * dot(at(c.faces[h / 2][0]), fans[h / 2].area);
         }
-        for (int a = 0; a < 3; ++a)
-            if (c.domain == "torus" && 2 * (hi[a] - lo[a]) >= c.hi[a])
-                fail("cell ", k, " spans half the torus period");
+        for (int a = 0; a < 3 && torus; ++a)
+            if (2 * (hi[a] - lo[a]) >= c.hi[a]) fail("cell ", k, " spans half the torus period");
         if (vol <= 0) fail("cell ", k, " has non-positive volume (6V = ", str(vol), ")");
         total += vol;
     }
@@ -322,16 +293,13 @@ void check_volumes(const Cert& c, const vector<FaceFan>& fans) {
     for (int a = 0; a < 3; ++a) expect *= c.hi[a] - c.lo[a];
     if (total != expect) fail("6 x the volumes sum to ", str(total), ", not ", str(expect));
 }
-// In a box every boundary face lies on a box face and faces outward, and no face of two cells
-// lies on the box boundary; with the volume sum, the boundary faces then tile each box face
-// exactly once (proofs/README.md, "The checker").
+// Boundary faces on the box surface, outward, no others on it: with the volume sum, a tiling
 void check_box_boundary(const Cert& c, const Mesh& m, const vector<FaceFan>& fans) {
+    auto on = [&](int p, int v) { return c.pos[v][p / 2] == (p % 2 ? c.hi[p / 2] : c.lo[p / 2]); };
     for (int f = 0; f < len(c.faces); ++f) {
-        int on = 63, plane = -1;  // bit p: f is on box face p (axis p / 2, at lo if p is even)
-        for (int v : c.faces[f])
-            for (int p = 0; p < 6; ++p)
-                if (c.pos[v][p / 2] != (p % 2 ? c.hi[p / 2] : c.lo[p / 2])) on &= ~(1 << p);
-        for (int p = 5; p >= 0; --p) plane = on >> p & 1 ? p : plane;
+        int plane = -1;  // the box face f is on, if any (one: f is not on a line); axis plane / 2
+        for (int p = 0; p < 6; ++p)  // at lo if p is even
+            if (std::ranges::all_of(c.faces[f], [&](int v) { return on(p, v); })) plane = p;
         const bool shared = m.face_cells[f].size() == 2;
         if (shared && plane >= 0) fail("face ", f, " of two cells lies on the box boundary");
         if (shared) continue;
@@ -341,9 +309,8 @@ void check_box_boundary(const Cert& c, const Mesh& m, const vector<FaceFan>& fan
             fail("face ", f, " on the box boundary does not face outward");
     }
 }
-// The uses of edge e = (a, b) in turning order: from a cell one crosses its face walking
-// a -> b into the next. The cells must form one cycle or one fan (proofs/README.md, "The
-// checker"); returns the uses crossed from the first cell's face walking b -> a, and if a fan.
+// The uses of edge e = (a, b) in turning order (a cell's face walking a -> b leads to the next):
+// one cycle or one fan of cells, else a Reject; from the first cell's use b -> a; if a fan.
 pair<Ids, bool> fan_around(const Cert& c, const Mesh& m, int e) {
     const Pairs& uses = m.edge_uses[e];
     map<int, std::array<int, 2>> role;  // cell -> its use walking a -> b, its use walking b -> a
@@ -367,8 +334,7 @@ pair<Ids, bool> fan_around(const Cert& c, const Mesh& m, int e) {
     if (len(order) != len(role) + 1) fail(m.edge_name(e), ": its cells are not one cycle or fan");
     return {order, fan};
 }
-// Local injectivity at edge e = (a, b): the sheets, in turning order about u = b - a, pass the
-// first one again exactly once around an interior edge, never at a boundary edge (<= pi).
+// Local injectivity: the sheets about u = b - a pass the first once around, a fan never (<= pi)
 void check_winding(const Cert& c, const Mesh& m, const vector<FaceFan>& fans, int e) {
     const auto [order, fan] = fan_around(c, m, e);
     const auto [a, b] = m.edges[e];
@@ -388,15 +354,12 @@ void check_winding(const Cert& c, const Mesh& m, const vector<FaceFan>& fans, in
         fail(m.edge_name(e), ": cells turn ", turns, " times, not exactly once (overlap or fold)");
     if (fan && half(D.back()) && det(u, r, D.back()) != 0) fail(m.edge_name(e), ": turn over pi");
 }
-
-// ---------------------------------------------------------------- valences, all-hex-dual
-// At an interior vertex v: the link (vertices: edges at v, edges: faces, triangles: cells) an
-// octahedron, the dual cell (vertices: cells, edges: faces, faces: edges) a cube; both checked
-// as a common shape plus two conditions each (proofs/README.md, "The checker").
+// valences, all-hex-dual: at an interior vertex v the link (its edges, faces, cells) is an
+// octahedron, the dual cell (cells, faces, edges) a cube: one shape, two conditions each (README)
 void check_star(const Cert& c, const Mesh& m, int v, bool valences, bool dual) {
     map<int, Ids> cell_edges;  // cell at v -> its edges at v, sorted (each twice)
     set<pair<int, int>> link_edges, dual_edges;
-    bool shape = m.v_degree[v] == 6 && m.v_faces[v].size() == 12;
+    bool shape = m.v_faces[v].size() == 12;
     for (int f : m.v_faces[v]) {
         const Ids& l = c.faces[f];
         const int i = static_cast<int>(std::find(l.begin(), l.end(), v) - l.begin());
@@ -415,19 +378,16 @@ void check_star(const Cert& c, const Mesh& m, int v, bool valences, bool dual) {
         triangles.insert(t);
         index.emplace(k, len(index));
     }
-    shape = shape && cell_edges.size() == 8;
-    if (valences && m.v_degree[v] != 6) fail("vertex ", v, " has ", m.v_degree[v], " edges, not 6");
+    shape = shape && cell_edges.size() == 8;  // and 6 edges at v: 12 faces x 2 of them = 6 x 4
     if (valences && !(shape && link_edges.size() == 12 && triangles.size() == 8))
-        fail("vertex ", v, ": link is not an octahedron");
+        fail("vertex ", v, ": link is not an octahedron (6 edges, 12 faces, 8 cells at v)");
     Pairs links;
     for (auto [x, y] : dual_edges) links.push_back({index[x], index[y]});
     if (dual && !(shape && dual_edges.size() == 12 && connected(index.size(), links)))
         fail("vertex ", v, ": its dual cell is not a combinatorial cube");
 }
-
-// ---------------------------------------------------------------- one certificate
 enum Count { kVertices, kEdges, kFaces, kCells, kInnerVertices, kInnerEdges, kCubes, kWound, kN };
-using Stats = std::array<size_t, kN>;
+using Stats = std::array<size_t, kN>;  // one certificate: what it counts, then its claims
 void check_kind(const Cert& c) {  // the kind fixes the domain and the minimum claims
     const vector<string> hexes{"subdivision", "valences", "all-hex-dual"};
     const map<string, pair<string, vector<string>>> kinds = {{"element", {"box", {"subdivision"}}},
@@ -439,21 +399,17 @@ void check_kind(const Cert& c) {  // the kind fixes the domain and the minimum c
     for (const string& claim : needed)
         if (!c.claims.count(claim)) fail("kind ", c.kind, " must claim '", claim, "'");
 }
-// Every claim is followed by exactly what the checker computes: nothing after a property it
-// checks; the values after a counted one, histograms as K:N in increasing K, N > 0 (face-sizes;
-// dual-valences: the sizes of the faces of two cells whose vertices are all interior).
+// A claim is followed by exactly what is computed: histograms K:N in increasing K (dual-valences:
+// faces with all vertices interior, thus of two cells); nothing after a checked property
 void check_claims(const Cert& c, const Mesh& m, const Stats& st) {
-    map<string, vector<string>> is;
-    for (const char* k : {"subdivision", "valences", "all-hex-dual", "face-sizes", "dual-valences"})
-        is[k] = {};
-    for (int i : {kVertices, kEdges, kFaces, kCells}) is["counts"].push_back(cat(st[i]));
-    is["interior-vertices"] = {cat(st[kInnerVertices])};
+    map<string, vector<string>> is{{"subdivision", {}}, {"valences", {}}, {"all-hex-dual", {}},
+        {"face-sizes", {}}, {"dual-valences", {}}, {"interior-vertices", {cat(st[kInnerVertices])}},
+        {"counts", {cat(st[kVertices]), cat(st[kEdges]), cat(st[kFaces]), cat(st[kCells])}}};
     map<int, int> sizes, inner;
     const auto on_boundary = [&](int v) { return m.bdry_v[v]; };
     for (int f = 0; f < len(c.faces); ++f) {
         ++sizes[len(c.faces[f])];
-        if (m.face_cells[f].size() == 2 && std::ranges::none_of(c.faces[f], on_boundary))
-            ++inner[len(c.faces[f])];
+        if (std::ranges::none_of(c.faces[f], on_boundary)) ++inner[len(c.faces[f])];
     }
     for (auto [k, n] : sizes) is["face-sizes"].push_back(cat(k, ":", n));
     for (auto [k, n] : inner) is["dual-valences"].push_back(cat(k, ":", n));
@@ -471,15 +427,14 @@ Stats check(const Cert& c) {
     m.face_cells.resize(c.faces.size());
     for (int k = 0; k < len(c.cells); ++k) check_cell(c, m, k);
     check_conformity(c, m);
-    const int E = len(m.edges);
     Stats st{c.pos.size(), m.edges.size(), c.faces.size(), c.cells.size(), 0, 0, 0, 0};
     if (c.claims.count("subdivision")) {  // cover with degree 1, locally injective at every edge
         vector<FaceFan> fans;
         for (int f = 0; f < len(c.faces); ++f) fans.push_back(face_fan(c, f));
         check_volumes(c, fans);
         if (c.domain == "box") check_box_boundary(c, m, fans);
-        for (int e = 0; e < E; ++e) check_winding(c, m, fans, e);
-        st[kWound] = E;
+        for (int e = 0; e < len(m.edges); ++e) check_winding(c, m, fans, e);
+        st[kWound] = m.edges.size();
     }
     const bool valences = c.claims.count("valences"), dual = c.claims.count("all-hex-dual");
     for (int v = 0; v < len(c.pos); ++v) {
@@ -487,7 +442,7 @@ Stats check(const Cert& c) {
         if (!m.bdry_v[v] && (valences || dual)) check_star(c, m, v, valences, dual);
         st[kCubes] += !m.bdry_v[v] && dual;
     }
-    for (int e = 0; e < E && (valences || dual); ++e) {  // an interior edge: a cycle of 4 cells
+    for (int e = 0; e < len(m.edges) && (valences || dual); ++e) {  // interior: 4 cells around
         st[kInnerEdges] += !m.bdry_e[e];
         if (!m.bdry_e[e] && len(fan_around(c, m, e).first) != 5)
             fail(m.edge_name(e), " is interior but not in a cycle of 4 cells");
@@ -495,9 +450,7 @@ Stats check(const Cert& c) {
     check_claims(c, m, st);
     return st;
 }
-
-// ---------------------------------------------------------------- files and manifests
-struct Totals {
+struct Totals {  // files and manifests: what a run has checked
     map<string, size_t> kinds;
     Stats sum{};
     size_t certificates = 0, rejected = 0, problems = 0;  // problems: of the manifest
@@ -577,7 +530,8 @@ void check_manifest(const std::filesystem::path& manifest, const string& text, T
             const string body = read_file(p, t.budget);
             std::uint64_t hash = 14695981039346656037ull;  // FNV-1a 64
             for (unsigned char ch : body) hash = (hash ^ ch) * 1099511628211ull;
-            const string hex = cat(std::hex, std::setfill('0'), std::setw(16), hash);
+            string hex;
+            for (int s = 60; s >= 0; s -= 4) hex += "0123456789abcdef"[hash >> s & 15];
             if (tok[5] != hex) fail(p, ": FNV-1a 64 hash is ", hex, ", not ", tok[5]);
             const size_t rejected = t.rejected, held = check_file(p, body, t, tok[3]);
             listed += held;
@@ -609,18 +563,17 @@ int run(const vector<string>& args) {
         return 2;
     }
     Totals t;
-    string text;
     try {
-        text = read_file(args.back(), t.budget);
+        const string text = read_file(args.back(), t.budget);
+        if (args.size() == 1) check_manifest(args[0], text, t);
+        if (args.size() == 2) {
+            const size_t n = check_file(args[1], text, t);
+            std::cout << args[1] << ": " << n << " certificates";
+            std::cout << " (covers lines are checked only with a manifest)\n";
+        }
     } catch (const Reject& r) {
         std::cout << "REJECTED: " << r.why << '\n';
         return 1;
-    }
-    if (args.size() == 1) check_manifest(args[0], text, t);
-    if (args.size() == 2) {
-        const size_t n = check_file(args[1], text, t);
-        std::cout << args[1] << ": " << n << " certificates";
-        std::cout << " (covers lines are checked only with a manifest)\n";
     }
     const Stats& s = t.sum;
     std::cout.imbue(std::locale(std::cout.getloc(), new Commas));
@@ -633,9 +586,8 @@ int run(const vector<string>& args) {
     }
     std::cout << "VERIFIED:";
     for (const auto& [kind, n] : t.kinds) std::cout << ' ' << n << ' ' << kind << " certificates,";
-    const size_t labels = t.covered.size();
-    if (t.covers >= 0)
-        std::cout << " covering " << labels << " labels (0.." << cat(labels - 1) << "),";
+    if (t.covers >= 0)  // then the labels are 0..covers-1
+        std::cout << " covering " << t.covers << " labels (0.." << cat(t.covers - 1) << "),";
     std::cout << ' ' << s[kInnerVertices] << " interior vertices (" << s[kCubes]
               << " cube dual cells), " << s[kInnerEdges] << " interior edges checked, " << s[kWound]
               << " edges locally injective\n";
