@@ -57,13 +57,14 @@ template <class Move>
 [[nodiscard]] OrientedForm oriented_form(const CellComplex& k, Move&& move, bool reflect) {
     using namespace oriented_form_detail;
     OrientedForm out;
-    std::vector<std::int64_t> points;
-    points.reserve(k.n_vertices());
+    std::vector<std::int64_t> moved;  // per vertex, packed once: a vertex is on many loops
+    moved.reserve(k.n_vertices());
     for (const LatticePoint& p : k.positions()) {
         const LatticePoint q = move(p);
         if (!packable(q)) return {};
-        points.push_back(pack(q));
+        moved.push_back(pack(q));
     }
+    std::vector<std::int64_t> points = moved;
     std::sort(points.begin(), points.end());
     out.push_back(static_cast<std::int64_t>(points.size()));
     out.insert(out.end(), points.begin(), points.end());
@@ -77,7 +78,7 @@ template <class Move>
         for (HalfFaceHandle h : k.cell_halffaces(CellHandle(c))) {
             const auto stored = k.face_vertices(h.face());
             loop.clear();
-            for (VertexHandle v : stored) loop.push_back(pack(move(k.position(v))));  // packable: a vertex
+            for (VertexHandle v : stored) loop.push_back(moved[v.index()]);
             if ((h.side() == 1) != reflect) std::reverse(loop.begin(), loop.end());
             std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
             faces.emplace_back(faces_buffer.size(), 1 + loop.size());
