@@ -26,35 +26,8 @@ LeafGrid::LeafGrid(std::vector<Leaf> leaves, std::string source, std::vector<int
     find_gap();
 }
 
-namespace {
-
-constexpr std::uint32_t kNoHome = 0xffffffffU;
-constexpr std::size_t kPrefetchAhead = 16;  // inserts: far enough to hide a miss, near enough to stay cached
-
-// Per leaf, the home slot of cell_of(leaf) in `nodes` (kNoHome where `skip` holds, and
-// everywhere if slots need more than 32 bits: then hashed as they are inserted), in
-// parallel: hashing is the map build's only part that does not depend on the order.
-template <class Cell, class Skip>
-std::vector<std::uint32_t> homes(const CellMap<std::int32_t>& nodes, const std::vector<Leaf>& leaves, Cell&& cell_of,
-                                 Skip&& skip) {
-    std::vector<std::uint32_t> out(leaves.size(), kNoHome);
-    if (nodes.slot_count() >= kNoHome) return out;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 1 << 12), [&](const auto& r) {
-        for (std::size_t n = r.begin(); n != r.end(); ++n)
-            out[n] = skip(leaves[n]) ? kNoHome : static_cast<std::uint32_t>(nodes.home_of(cell_of(leaves[n])));
-    });
-    return out;
-}
-
-}  // namespace
-
-// Range and duplicate checks, in input order so the first bad line is reported. The home
-// slots are hashed in parallel beforehand; the inserts stay serial and in leaf order, so the
-// map's slots (and every iteration over them) are those of a serial build.
+// Range and duplicate checks, in input order so the first bad line is reported.
 void LeafGrid::index_leaves() {
-    const std::size_t hashed_for = nodes_.slot_count();  // the homes hold for this capacity
-    const std::vector<std::uint32_t> home =
-        homes(nodes_, leaves_, [](const Leaf& l) { return l; }, [](const Leaf& l) { return !l.valid(); });
     for (std::size_t n = 0; n < leaves_.size(); ++n) {
         const Leaf& l = leaves_[n];
         if (!l.valid()) {
@@ -63,11 +36,7 @@ void LeafGrid::index_leaves() {
                                         : "coordinates must be in [0, 2^" + std::to_string(l.level) + ")";
             throw InputError(source_, line(n), "invalid leaf " + to_string(l) + ": " + why);
         }
-        if (n + kPrefetchAhead < home.size() && home[n + kPrefetchAhead] != kNoHome)
-            nodes_.prefetch(home[n + kPrefetchAhead]);
-        const bool hashed = home[n] != kNoHome && nodes_.slot_count() == hashed_for;
-        const auto [value, inserted] = hashed ? nodes_.insert_at(l, home[n], static_cast<std::int32_t>(n))
-                                              : nodes_.insert(l, static_cast<std::int32_t>(n));
+        const auto [value, inserted] = nodes_.insert(l, static_cast<std::int32_t>(n));
         if (!inserted)
             throw InputError(source_, line(n), "duplicate leaf " + describe(n) + ", first given as " +
                                                    describe(static_cast<std::size_t>(*value)));
@@ -75,22 +44,12 @@ void LeafGrid::index_leaves() {
 }
 
 // Marks every proper ancestor of every leaf as interior. Leaves are disjoint or nested,
-// so the leaves overlap iff some leaf is an ancestor of another: met while climbing. The
-// parents' home slots are hashed in parallel (most climbs stop at the parent, known
-// already); the inserts stay serial and in leaf order, as in index_leaves.
+// so the leaves overlap iff some leaf is an ancestor of another: met while climbing.
 void LeafGrid::index_ancestors() {
-    const std::size_t hashed_for = nodes_.slot_count();
-    const std::vector<std::uint32_t> parent_home = homes(
-        nodes_, leaves_, [](const Leaf& l) { return ancestor(l, l.level - 1); }, [](const Leaf& l) { return l.level == 0; });
     for (std::size_t n = 0; n < leaves_.size(); ++n) {
-        if (n + kPrefetchAhead < parent_home.size() && parent_home[n + kPrefetchAhead] != kNoHome)
-            nodes_.prefetch(parent_home[n + kPrefetchAhead]);
         for (int level = leaves_[n].level - 1; level >= 0; --level) {
             const Leaf up = ancestor(leaves_[n], level);
-            const auto id = -1 - static_cast<std::int32_t>(n);
-            const bool parent = level == leaves_[n].level - 1 && parent_home[n] != kNoHome &&
-                                nodes_.slot_count() == hashed_for;
-            const auto [value, inserted] = parent ? nodes_.insert_at(up, parent_home[n], id) : nodes_.insert(up, id);
+            const auto [value, inserted] = nodes_.insert(up, -1 - static_cast<std::int32_t>(n));
             if (*value >= 0)
                 throw InputError(source_, line(n), "overlap: leaf " + describe(n) + " lies inside leaf " +
                                                        describe(static_cast<std::size_t>(*value)));

@@ -45,19 +45,15 @@ public:
     std::pair<V*, bool> insert(const Leaf& cell, V value) {
         if (2 * (size_ + 1) > slots_.size()) rehash(2 * slots_.size());
         const CellKey key = pack(cell);
-        return insert_from(key, slot_of(key), value);
+        std::size_t s = slot_of(key);
+        while (slots_[s].key.hi != 0) {
+            if (slots_[s].key == key) return {&slots_[s].value, false};
+            s = (s + 1) & mask_;
+        }
+        slots_[s] = {key, value};
+        ++size_;
+        return {&slots_[s].value, true};
     }
-
-    /// The slot where the probe for `cell` starts: a pure function of the cell and the
-    /// capacity, so it can be computed ahead (in parallel) for insert_at.
-    [[nodiscard]] std::size_t home_of(const Leaf& cell) const { return slot_of(pack(cell)); }
-    /// insert(cell, value) given home == home_of(cell), computed after the last rehash.
-    std::pair<V*, bool> insert_at(const Leaf& cell, std::size_t home, V value) {
-        if (2 * (size_ + 1) > slots_.size()) return insert(cell, value);  // a rehash moves the homes
-        return insert_from(pack(cell), home, value);
-    }
-    /// Asks the cache for a home slot ahead of its insert_at (no effect on the contents).
-    void prefetch(std::size_t home) const { __builtin_prefetch(&slots_[home]); }
 
     /// Calls f(cell, value) for every entry, in unspecified order.
     template <class F>
@@ -75,17 +71,6 @@ public:
     }
 
 private:
-    // Linear probing from `s`: the first slot holding the key or free.
-    std::pair<V*, bool> insert_from(const CellKey& key, std::size_t s, V value) {
-        while (slots_[s].key.hi != 0) {
-            if (slots_[s].key == key) return {&slots_[s].value, false};
-            s = (s + 1) & mask_;
-        }
-        slots_[s] = {key, value};
-        ++size_;
-        return {&slots_[s].value, true};
-    }
-
     struct Slot {
         CellKey key;
         V value{};
