@@ -14,8 +14,10 @@
 #include "histogram_format.hpp"
 #include "mesh_size_cli.hpp"
 #include "progress_bar.hpp"
+#include "threads_option.hpp"
 
 #include "dualhex/geometry/hex_output.hpp"
+#include "dualhex/mesher/cpu_clock.hpp"
 #include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/geometry/surface.hpp"
 
@@ -25,6 +27,7 @@ namespace {
 struct MeshOptionsCli {
     std::string input, output, balance = "weak";
     int smooth = 5;
+    int threads = 0;  // 0: every core
     double feature_angle = 45.0;
     double min_quality = 0.5, core_margin = 0.1, core_fill_margin = 0.02, optimise_ms = 0, pad_ray_limit = 2.0;
     double optimise_work = mesher::OptimiseOptions{}.work_per_vertex;
@@ -32,6 +35,13 @@ struct MeshOptionsCli {
     bool json = false, force = false, accept_topology_change = false, no_progress = false;
     MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
+
+nlohmann::json times_json(const mesher::MeshTimes& t) {
+    return {{"octree", t.octree},   {"balance", t.balance}, {"pair", t.pair},         {"balance_pair", t.balance_pair},
+            {"install", t.install}, {"verify", t.verify},   {"dual", t.dual},         {"core", t.core},
+            {"refine", t.refine},   {"pad", t.pad},         {"features", t.features}, {"smooth", t.smooth},
+            {"optimise", t.optimise}, {"check", t.check},   {"report", t.report},     {"write", t.write}};
+}
 
 // The far surface points (mesh_report.hpp): where, how far (relative), why.
 nlohmann::json far_points_json(const mesher::MeshPipelineResult& r, double diagonal) {
@@ -50,6 +60,7 @@ nlohmann::json far_points_json(const mesher::MeshPipelineResult& r, double diago
 }
 
 void run_mesh(const MeshOptionsCli& opt) {
+    const ThreadLimit limit(opt.threads);
     const mesher::MeshSizeOptions size = resolve_size_options(opt.size);
     {  // before any work: the format and the overwrite check
         const std::string ext = std::filesystem::path(opt.output).extension().string();
@@ -109,8 +120,11 @@ void run_mesh(const MeshOptionsCli& opt) {
 
     step("write", steps - 1);
     const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = mesher::process_cpu_ms(), main0 = mesher::thread_cpu_ms();
     geometry::write_hex_mesh(opt.output, r.mesh, opt.force, r.cell_data);
     r.ms.write = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    r.cpu_ms.write = mesher::process_cpu_ms() - cpu0;
+    r.main_cpu_ms.write = mesher::thread_cpu_ms() - main0;
     bar.finish("mesh: " + with_commas(r.mesh.hexes.size()) + " hexes written to " +
                std::filesystem::path(opt.output).filename().string());
 
@@ -240,23 +254,8 @@ void run_mesh(const MeshOptionsCli& opt) {
                     {"core_singular_edge_valences", histogram_json(r.core.singular_edge_valences)},
                     {"hausdorff", r.hausdorff.max},
                     {"hausdorff_mean", r.hausdorff.mean},
-                    {"ms",
-                     {{"octree", r.ms.octree},
-                      {"balance", r.ms.balance},
-                      {"pair", r.ms.pair},
-                      {"balance_pair", r.ms.balance_pair},
-                      {"install", r.ms.install},
-                      {"verify", r.ms.verify},
-                      {"dual", r.ms.dual},
-                      {"core", r.ms.core},
-                      {"refine", r.ms.refine},
-                      {"pad", r.ms.pad},
-                      {"features", r.ms.features},
-                      {"smooth", r.ms.smooth},
-                      {"optimise", r.ms.optimise},
-                      {"check", r.ms.check},
-                      {"report", r.ms.report},
-                      {"write", r.ms.write}}}});
+                    {"ms", times_json(r.ms)},
+                    {"cpu_ms", {{"all", times_json(r.cpu_ms)}, {"main", times_json(r.main_cpu_ms)}}}});
     } else {
         std::printf("%s: %zu triangles, %s balance\n", input_name.c_str(), triangles, opt.balance.c_str());
         std::printf("size:             %.4g at the surface (%s preset; level %d), octree depth %d (max %d)\n",
@@ -367,6 +366,7 @@ void register_mesh(CLI::App& app) {
         ->check(CLI::Range(0.0, 100.0));
     sub->add_flag("--accept-topology-change", opt->accept_topology_change,
                   "Exit 0 even if the boundary's components or Euler characteristics differ from the input's");
+    add_threads_option(*sub, opt->threads);
     add_json_flag(*sub, opt->json);
     add_no_progress_flag(*sub, opt->no_progress);
     sub->callback([opt] { run_mesh(*opt); });

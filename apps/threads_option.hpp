@@ -1,5 +1,5 @@
 #pragma once
-// `--threads N` of the heavy commands (verify, install): oneTBB's worker limit while the
+// `--threads N` of the heavy commands (verify, install, mesh): oneTBB's worker limit while the
 // command runs; default (0) = every core. Results never depend on it: every parallel loop
 // writes each item's output to its own slot and merges in a fixed order.
 #include <optional>

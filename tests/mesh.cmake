@@ -44,3 +44,7 @@ dualhex_add_test(test_mesher_core_fill SOURCES test_mesher_core_fill.cpp DEPS du
 dualhex_add_test(test_mesher_refine SOURCES test_mesher_refine.cpp DEPS dualhex::mesher)
 # the core cleanup before the pad (mesher/core_cleanup.hpp)
 dualhex_add_test(test_mesher_core_cleanup SOURCES test_mesher_core_cleanup.cpp DEPS dualhex::mesher)
+# `dualhex mesh --threads N`: the same bytes and report at 1, 2 and 4 threads (issue 13)
+dualhex_add_test(test_mesher_threads SOURCES test_mesher_threads.cpp DEPS nlohmann_json::nlohmann_json)
+target_compile_definitions(test_mesher_threads PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
+add_dependencies(test_mesher_threads dualhex)

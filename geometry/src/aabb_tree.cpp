@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
+#include "dualhex/geometry/parallel_each.hpp"
 #include "dualhex/geometry/triangle_geometry.hpp"
 
 namespace dualhex::geometry {
@@ -202,6 +204,18 @@ std::vector<RayHit> AabbTree::all_hits(const Vector3d& origin, const Vector3d& d
     });
     std::sort(hits.begin(), hits.end(), [](const RayHit& a, const RayHit& b) { return a.t < b.t; });
     return hits;
+}
+
+std::vector<ClosestPoint> closest_points(const AabbTree& tree, const std::vector<Eigen::Vector3d>& points) {
+    std::vector<ClosestPoint> out(points.size());
+    parallel_each(points.size(), 256, [&](std::size_t i) { out[i] = tree.closest_point(points[i]); });
+    return out;
+}
+
+std::vector<double> distances(const AabbTree& tree, const std::vector<Eigen::Vector3d>& points) {
+    std::vector<double> out(points.size());
+    parallel_each(points.size(), 256, [&](std::size_t i) { out[i] = std::sqrt(tree.squared_distance(points[i])); });
+    return out;
 }
 
 }  // namespace dualhex::geometry

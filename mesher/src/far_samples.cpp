@@ -20,10 +20,12 @@ std::vector<Eigen::Vector3d> surface_samples(const geometry::TriangleSurface& su
 }
 
 std::vector<FarSample> far_samples(const geometry::TriangleSurface& from, const geometry::AabbTree& to, double far) {
+    const std::vector<Eigen::Vector3d> samples = surface_samples(from);
+    const std::vector<geometry::ClosestPoint> closest = geometry::closest_points(to, samples);  // in parallel
     std::vector<FarSample> out;
-    for (const Eigen::Vector3d& p : surface_samples(from)) {
-        const geometry::ClosestPoint c = to.closest_point(p);
-        if (c.squared_distance > far * far) out.push_back({std::sqrt(c.squared_distance), p, c.point});
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const geometry::ClosestPoint& c = closest[i];
+        if (c.squared_distance > far * far) out.push_back({std::sqrt(c.squared_distance), samples[i], c.point});
     }
     std::stable_sort(out.begin(), out.end(), [](const FarSample& a, const FarSample& b) { return a.distance > b.distance; });
     return out;

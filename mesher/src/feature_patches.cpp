@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "dualhex/geometry/parallel_each.hpp"
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/geometry/triangle_geometry.hpp"
 #include "hex_edges.hpp"
@@ -137,18 +138,27 @@ std::size_t project_to_patches(HexMesh& mesh, const geometry::AabbTree& tree, co
     std::vector<std::vector<int>> triangles_of(static_cast<std::size_t>(features.patches));
     for (std::size_t t = 0; t < features.patch.size(); ++t)
         triangles_of[static_cast<std::size_t>(features.patch[t])].push_back(static_cast<int>(t));
-    std::size_t moved = 0;
-    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    // Each vertex's move reads only its own position and the sums above: computed in
+    // parallel, one slot per vertex, then applied.
+    std::vector<char> moves(mesh.points.size(), 0);
+    std::vector<Eigen::Vector3d> target(mesh.points.size());
+    geometry::parallel_each(mesh.points.size(), 256, [&](std::size_t v) {
         const int want = vertex_want[v];
-        if (constraints.role[v] != VertexRole::Surface || want < 0 || want >= features.patches) continue;
+        if (constraints.role[v] != VertexRole::Surface || want < 0 || want >= features.patches) return;
         const int now = features.patch[static_cast<std::size_t>(tree.closest_point(mesh.points[v]).triangle)];
-        if (now == want) continue;
+        if (now == want) return;
         // the closest point of the wanted patch to the vertex itself would lie on the crease
         // (a flat quad): take it for the mean of its boundary neighbours, on its own side
         const Eigen::Vector3d mean = neighbour_sum[v] / neighbour_count[v];
-        mesh.points[v] = closest_on_patch(s, triangles_of[static_cast<std::size_t>(want)], mean);
-        ++moved;
-    }
+        target[v] = closest_on_patch(s, triangles_of[static_cast<std::size_t>(want)], mean);
+        moves[v] = 1;
+    });
+    std::size_t moved = 0;
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+        if (moves[v]) {
+            mesh.points[v] = target[v];
+            ++moved;
+        }
     return moved;
 }
 

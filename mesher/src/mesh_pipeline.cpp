@@ -10,6 +10,7 @@
 
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/geometry/hex_topology.hpp"
+#include "dualhex/mesher/cpu_clock.hpp"
 #include "dualhex/mesher/cell_levels.hpp"
 #include "dualhex/mesher/core_boundary_smooth.hpp"
 #include "dualhex/mesher/feature_patches.hpp"
@@ -34,19 +35,26 @@ constexpr double kFarSurfaceDistance = 0.006;
 constexpr std::array<std::string_view, 14> kStages{"octree", "balance",  "pair",   "install",  "verify", "dual",   "core",
                                                    "refine", "pad",      "features", "smooth", "optimise", "check", "report"};
 
-// Runs one named stage: reports its name, times it into `ms`, returns what it returns.
+// Runs one named stage: reports its name, times it into result's `field` of ms (wall),
+// cpu_ms (all threads) and main_cpu_ms (this thread), returns what it returns.
 template <class Stage>
-auto timed(const MeshPipelineOptions& options, std::string_view name, double& ms, Stage&& stage) {
+auto timed(const MeshPipelineOptions& options, std::string_view name, MeshPipelineResult& result,
+           double MeshTimes::*field, Stage&& stage) {
     if (options.progress) {
         const auto i = static_cast<std::size_t>(std::find(kStages.begin(), kStages.end(), name) - kStages.begin());
         options.progress(name, i, kStages.size());
     }
-    const auto t0 = Clock::now();
     struct Stop {
-        Clock::time_point t0;
-        double& ms;
-        ~Stop() { ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }  // summed over rounds
-    } stop{t0, ms};
+        MeshPipelineResult& result;
+        double MeshTimes::*field;
+        Clock::time_point t0 = Clock::now();
+        double cpu0 = process_cpu_ms(), main0 = thread_cpu_ms();
+        ~Stop() {  // summed over rounds
+            result.ms.*field += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+            result.cpu_ms.*field += process_cpu_ms() - cpu0;
+            result.main_cpu_ms.*field += thread_cpu_ms() - main0;
+        }
+    } stop{result, field};
     return stage();
 }
 
@@ -98,10 +106,11 @@ std::vector<int> padded_levels(const HexMesh& padded, std::size_t core_hexes, co
 }
 
 // Stages "balance" and "pair": the least paired and balanced refinement of the octree.
-LeafGrid grid_stages(const MeshPipelineOptions& options, const LeafGrid& octree, MeshTimes& ms) {
-    const LeafGrid balanced = timed(options, "balance", ms.balance, [&] { return balance(octree, options.balance); });
-    LeafGrid grid = timed(options, "pair", ms.pair, [&] { return pair(balanced, options.balance); });
-    ms.balance_pair = ms.balance + ms.pair;
+LeafGrid grid_stages(const MeshPipelineOptions& options, const LeafGrid& octree, MeshPipelineResult& result) {
+    const LeafGrid balanced =
+        timed(options, "balance", result, &MeshTimes::balance, [&] { return balance(octree, options.balance); });
+    LeafGrid grid = timed(options, "pair", result, &MeshTimes::pair, [&] { return pair(balanced, options.balance); });
+    for (MeshTimes* t : {&result.ms, &result.cpu_ms, &result.main_cpu_ms}) t->balance_pair = t->balance + t->pair;
     if (grid.size() > options.max_leaves)  // pairing and balance grade the octree: bounded, but check
         throw geometry::OctreeTooLarge("paired grid: " + std::to_string(grid.size()) + " leaves, more than the limit " +
                                            std::to_string(options.max_leaves),
@@ -170,11 +179,10 @@ void smooth_stage(MeshPipelineResult& result, const VertexDomain& domain, int it
 MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions& options) {
     check_options(options);
     MeshPipelineResult result;
-    MeshTimes& ms = result.ms;
 
     const geometry::SurfaceOctreeOptions octree_options = mesher::octree_options(options, tree.bounds());
     geometry::SurfaceOctree octree =
-        timed(options, "octree", ms.octree, [&] { return geometry::surface_octree(tree, octree_options); });
+        timed(options, "octree", result, &MeshTimes::octree, [&] { return geometry::surface_octree(tree, octree_options); });
     result.root = octree.root;
     result.target_size = octree_options.surface_size;
     result.size_level = octree.size_level;
@@ -186,16 +194,16 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     InstallResult installed;
     ClippedDual dual;
     for (int round = 0;; ++round) {
-        grid = grid_stages(options, octree_grid, ms);
+        grid = grid_stages(options, octree_grid, result);
         result.leaves = grid.size();
-        installed = timed(options, "install", ms.install, [&] { return install_schemes(grid, options.balance); });
+        installed = timed(options, "install", result, &MeshTimes::install, [&] { return install_schemes(grid, options.balance); });
         result.cells = installed.complex.n_cells();
-        (void)timed(options, "verify", ms.verify, [&] { return require_verified(installed); });
-        dual = timed(options, "dual", ms.dual, [&] { return root_clipped_dual(installed); });
-        result.core = timed(options, "core", ms.core,
+        (void)timed(options, "verify", result, &MeshTimes::verify, [&] { return require_verified(installed); });
+        dual = timed(options, "dual", result, &MeshTimes::dual, [&] { return root_clipped_dual(installed); });
+        result.core = timed(options, "core", result, &MeshTimes::core,
                             [&] { return core_stage(dual, installed, octree.root, tree, options.core); });
         if (round == options.refine_rounds) break;
-        const bool again = timed(options, "refine", ms.refine, [&] {
+        const bool again = timed(options, "refine", result, &MeshTimes::refine, [&] {
             return refine_stage(result, octree_grid, tree, options);
         });
         if (!again) break;
@@ -213,7 +221,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     }
 
     QualityState state;
-    timed(options, "pad", ms.pad, [&] {
+    timed(options, "pad", result, &MeshTimes::pad, [&] {
         pad_stage(result, tree, options.pad);
         state = quality_state(result.mesh);
     });
@@ -224,7 +232,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     geometry::FeatureSet features;
     FeatureCurves curves;
     HexMesh snapped;  // the mesh as the features stage left it, measured in the report
-    timed(options, "features", ms.features, [&] {
+    timed(options, "features", result, &MeshTimes::features, [&] {
         if (options.feature_angle <= 0) return;
         geometry::FeatureOptions feature_options;
         feature_options.angle_degrees = options.feature_angle;
@@ -245,21 +253,21 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     });
     observe(options, "features", result, state);
     const VertexDomain domain{tree, curves, result.constraints};
-    timed(options, "smooth", ms.smooth, [&] { smooth_stage(result, domain, options.smooth_iterations, state); });
+    timed(options, "smooth", result, &MeshTimes::smooth, [&] { smooth_stage(result, domain, options.smooth_iterations, state); });
     observe(options, "smooth", result, state);
     HexMesh& mesh = result.mesh;
-    result.optimise = timed(options, "optimise", ms.optimise, [&] {
+    result.optimise = timed(options, "optimise", result, &MeshTimes::optimise, [&] {
         return optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
     });
     observe(options, "optimise", result, state);
-    result.topology = timed(options, "check", ms.check, [&] {
+    result.topology = timed(options, "check", result, &MeshTimes::check, [&] {
         result.inverted_hexes.clear();  // never success for an inverted mesh
         for (std::size_t h = 0; h < state.scaled_jacobian.size(); ++h)
             if (!(state.scaled_jacobian[h] > kFlatScaledJacobian)) result.inverted_hexes.push_back(h);
         return check_topology(mesh, tree.surface());
     });
 
-    timed(options, "report", ms.report, [&] {
+    timed(options, "report", result, &MeshTimes::report, [&] {
         result.quality = geometry::summarize(state.scaled_jacobian);
         result.cell_data.scaled_jacobian = state.scaled_jacobian;
         result.singular_edge_valences = interior_singular_edge_valences(mesh);

@@ -7,6 +7,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "dualhex/geometry/parallel_each.hpp"
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/mesher/quality_state.hpp"
 #include "optimise_detail.hpp"
@@ -124,15 +125,23 @@ int untangle_phase(OptimiseContext& c, BarrierEnergy& energy, int max_sweeps) {
     auto mark_hex = [&](std::size_t h) {
         for (int w : c.mesh.hexes[h]) dirty[static_cast<std::size_t>(w)] = 1;
     };
+    // The active hexes' energies and worst dets are pure evaluations, made in parallel into
+    // one slot per hex; the sum, the minimum and the marks are then taken in hex order, so
+    // they are the serial ones bit for bit.
+    std::vector<double> hex_energy(c.mesh.hexes.size()), hex_det(c.mesh.hexes.size());
     auto totals = [&](double& min_det, bool mark) {
+        geometry::parallel_each(hex_active.size(), 512, [&](std::size_t h) {
+            if (!hex_active[h]) return;
+            hex_energy[h] = energy.hex(c.mesh, h, -1, Eigen::Vector3d::Zero(), nullptr);
+            hex_det[h] = energy.min_det(c.mesh, h);
+        });
         double sum = 0;
         min_det = INFINITY;
         for (std::size_t h = 0; h < hex_active.size(); ++h)
             if (hex_active[h]) {
-                sum += energy.hex(c.mesh, h, -1, Eigen::Vector3d::Zero(), nullptr);
-                const double d = energy.min_det(c.mesh, h);
-                min_det = std::min(min_det, d);
-                if (mark && !(d > kNearEps * energy.eps)) mark_hex(h);
+                sum += hex_energy[h];
+                min_det = std::min(min_det, hex_det[h]);
+                if (mark && !(hex_det[h] > kNearEps * energy.eps)) mark_hex(h);
             }
         return sum;
     };

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dualhex/geometry/hex_topology.hpp"
+#include "dualhex/geometry/parallel_each.hpp"
 #include "dualhex/geometry/quality.hpp"
 #include "hex_energy.hpp"
 
@@ -52,6 +53,32 @@ BoundaryFrame boundary_frame(const geometry::HexMesh& core, const Quads& quads, 
     for (auto& v : f.normal)
         if (v.squaredNorm() > 0) v.normalize();
     return f;
+}
+
+// Per boundary point (image[v] >= 0) its two surface candidates: the hit of the ray along
+// the smoothed normal, taken if it is within ray_limit x (distance + edge), else the
+// closest point. Each point's queries are independent: computed in parallel.
+struct OuterCandidates {
+    Eigen::Vector3d taken = Eigen::Vector3d::Zero(), other = Eigen::Vector3d::Zero();
+    bool by_ray = false;
+};
+
+std::vector<OuterCandidates> outer_candidates(const geometry::HexMesh& core, const std::vector<int>& image,
+                                              const BoundaryFrame& frame, const geometry::AabbTree& tree,
+                                              double ray_limit) {
+    std::vector<OuterCandidates> out(core.points.size());
+    geometry::parallel_each(out.size(), 64, [&](std::size_t v) {
+        if (image[v] < 0) return;
+        const Eigen::Vector3d& p = core.points[v];
+        const geometry::ClosestPoint closest = tree.closest_point(p);
+        const double limit = ray_limit * (std::sqrt(closest.squared_distance) + frame.edge[v]);
+        const auto hit = frame.normal[v].squaredNorm() > 0 ? tree.first_hit(p, frame.normal[v]) : std::nullopt;
+        if (hit && hit->t <= limit)
+            out[v] = {hit->point, closest.point, true};
+        else
+            out[v] = {closest.point, hit ? hit->point : closest.point, false};
+    });
+    return out;
 }
 
 std::size_t inverted_at(const geometry::HexMesh& mesh, const detail::VertexHexes& hexes, std::size_t v) {
@@ -101,22 +128,13 @@ PadResult pad_layer(const geometry::HexMesh& core, const geometry::AabbTree& tre
     std::vector<Eigen::Vector3d> other;  // (outer points): the candidate not taken
     for (const auto& q : boundary.quads)
         for (int c : q) image[static_cast<std::size_t>(c)] = 0;
-    for (std::size_t v = 0; v < core.points.size(); ++v) {
+    const std::vector<OuterCandidates> candidates = outer_candidates(core, image, frame, tree, options.ray_limit);
+    for (std::size_t v = 0; v < core.points.size(); ++v) {  // numbered in vertex order
         if (image[v] < 0) continue;
-        const Eigen::Vector3d& p = core.points[v];
-        const geometry::ClosestPoint closest = tree.closest_point(p);
-        const double limit = options.ray_limit * (std::sqrt(closest.squared_distance) + frame.edge[v]);
-        const auto hit = frame.normal[v].squaredNorm() > 0 ? tree.first_hit(p, frame.normal[v]) : std::nullopt;
         image[v] = static_cast<int>(out.mesh.points.size());
-        if (hit && hit->t <= limit) {
-            out.mesh.points.push_back(hit->point);
-            other.push_back(closest.point);
-            ++out.by_ray;
-        } else {
-            out.mesh.points.push_back(closest.point);
-            other.push_back(hit ? hit->point : closest.point);
-            ++out.by_closest_point;
-        }
+        out.mesh.points.push_back(candidates[v].taken);
+        other.push_back(candidates[v].other);
+        ++(candidates[v].by_ray ? out.by_ray : out.by_closest_point);
     }
     for (const auto& q : boundary.quads) {
         std::array<int, 8> h{};

@@ -8,6 +8,7 @@
 #include "dualhex/geometry/inside.hpp"
 #include "dualhex/geometry/hex_topology.hpp"
 #include "dualhex/geometry/manifold_repair.hpp"
+#include "dualhex/geometry/parallel_each.hpp"
 #include "dualhex/mesher/core_cleanup.hpp"
 #include "dualhex/mesher/core_topology.hpp"
 
@@ -52,15 +53,16 @@ EmbeddedDual embed_dual(const ClippedDual& dual, std::int64_t extent, const geom
     // below); only inside points that far get their exact distance (the core's depth order
     // needs it; outside, every hex around is outside whatever the value).
     constexpr double kReach = 4.0;
+    // Each point's search is independent (its own slots): in parallel.
     std::vector<char> capped(n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
+    geometry::parallel_each(n, 256, [&](std::size_t i) {
         double longest = 0;
         for (std::uint32_t q : neighbours[i]) longest = std::max(longest, (out.points[q] - out.points[i]).norm());
         const double reach = longest > 0 ? kReach * longest : INFINITY;
         const geometry::ClosestPoint c = tree.closest_point(out.points[i], reach * reach);
         capped[i] = c.triangle < 0 ? 1 : 0;
         out.signed_distance[i] = std::sqrt(c.squared_distance);
-    }
+    });
     // Signs: a ray-parity test at one point per region, then spread along dual edges: if
     // |p - q| < d(p), the segment pq stays in the open ball around p that the surface does
     // not meet, so q is on p's side.
@@ -80,8 +82,9 @@ EmbeddedDual embed_dual(const ClippedDual& dual, std::int64_t extent, const geom
                 }
         }
     }
-    for (std::size_t i = 0; i < n; ++i)
+    geometry::parallel_each(n, 256, [&](std::size_t i) {
         if (capped[i] && sign[i] > 0) out.signed_distance[i] = std::sqrt(tree.squared_distance(out.points[i]));
+    });
     for (std::size_t i = 0; i < n; ++i) out.signed_distance[i] *= sign[i];
     return out;
 }

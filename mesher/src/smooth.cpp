@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "dualhex/geometry/parallel_each.hpp"
 #include "dualhex/geometry/quality.hpp"
 #include "hex_edges.hpp"
 
@@ -61,12 +62,13 @@ int smooth_interior(geometry::HexMesh& mesh, const std::vector<char>& on_boundar
     std::vector<Eigen::Vector3d> next;
     for (int it = 0; it < iterations; ++it) {
         next = mesh.points;
-        for (std::size_t v = 0; v < mesh.points.size(); ++v) {
-            if (on_boundary[v] || g.start[v] == g.start[v + 1]) continue;
+        // A Jacobi step (each vertex from the old positions, into its own slot): parallel.
+        geometry::parallel_each(mesh.points.size(), 1024, [&](std::size_t v) {
+            if (on_boundary[v] || g.start[v] == g.start[v + 1]) return;
             Eigen::Vector3d m = Eigen::Vector3d::Zero();
             for (std::size_t i = g.start[v]; i < g.start[v + 1]; ++i) m += mesh.points[static_cast<std::size_t>(g.adj[i])];
             next[v] = m / static_cast<double>(g.start[v + 1] - g.start[v]);
-        }
+        });
         std::swap(next, mesh.points);
         std::vector<double> sj_next = geometry::scaled_jacobians(mesh);
         const std::size_t inverted_next = count_inverted(sj_next);

@@ -73,4 +73,10 @@ private:
     std::vector<Node> nodes_;
 };
 
+/// Per point, tree.closest_point(points[i]) (in parallel, each in its own slot: the same
+/// for any number of threads).
+[[nodiscard]] std::vector<ClosestPoint> closest_points(const AabbTree& tree, const std::vector<Eigen::Vector3d>& points);
+/// Per point, its distance to the surface (sqrt of the squared distance), the same way.
+[[nodiscard]] std::vector<double> distances(const AabbTree& tree, const std::vector<Eigen::Vector3d>& points);
+
 }  // namespace dualhex::geometry

@@ -151,7 +151,9 @@ struct MeshPipelineResult {
     /// Where the input is farther than 0.6% of the bbox diagonal from the hex boundary, and
     /// which core decision left the hexes there out (mesh_report.hpp).
     std::vector<FarSurfacePoint> far_points;
-    MeshTimes ms;
+    MeshTimes ms;           ///< wall time per stage
+    MeshTimes cpu_ms;       ///< CPU time per stage, every thread of the process (measuring only)
+    MeshTimes main_cpu_ms;  ///< CPU time per stage of the calling thread: about the wall time on free cores
 };
 
 /// Runs the pipeline on the surface of `tree` (closed, outward oriented).
