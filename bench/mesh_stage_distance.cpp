@@ -14,7 +14,7 @@ using namespace dualhex;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: mesh_stage_distance MODEL [--refine-rounds N]\n");
+        std::fprintf(stderr, "usage: mesh_stage_distance MODEL [--refine-rounds N] [--refine-distance D]\n");
         return 2;
     }
     mesher::MeshPipelineOptions options;
@@ -27,8 +27,12 @@ int main(int argc, char** argv) {
         std::printf("%-9s hexes %7zu  mesh->surface max %.3f%%  surface->mesh max %.3f%%  mean %.4f%%\n",
                     std::string(stage).c_str(), r.mesh.hexes.size(), 100 * d.relative(d.mesh_to_surface.max),
                     100 * d.relative(d.surface_to_mesh.max), 100 * d.relative(d.mean()));
+        // Which side is far tells the cause: a hex-boundary point far from the input is a pad
+        // quad bridging empty space; an input point far from the mesh a part the core misses.
         const Eigen::Vector3d& f = d.mesh_to_surface.farthest;
-        std::printf("          farthest hex-boundary point (%.4g %.4g %.4g)\n", f.x(), f.y(), f.z());
+        const Eigen::Vector3d& g = d.surface_to_mesh.farthest;
+        std::printf("          farthest hex-boundary point (%.4g %.4g %.4g), farthest input point (%.4g %.4g %.4g)\n",
+                    f.x(), f.y(), f.z(), g.x(), g.y(), g.z());
     };
     const mesher::MeshPipelineResult r = mesher::mesh_surface(tree, options);
     for (std::size_t n = 0; n < r.refine.places.size(); ++n)
