@@ -32,7 +32,7 @@ struct MeshOptionsCli {
     double min_quality = 0.5, core_margin = 0.1, core_fill_margin = 0.02, optimise_ms = 0, pad_ray_limit = 2.0;
     double optimise_work = mesher::OptimiseOptions{}.work_per_vertex;
     double feature_min_chain = mesher::MeshPipelineOptions{}.feature_min_chain;
-    bool json = false, force = false, accept_topology_change = false, no_progress = false;
+    bool json = false, force = false, accept_topology_change = false, no_progress = false, no_release = false, path_rule = false;
     MeshSizeCli size;  // --preset, --size, ... (mesh_size_cli.hpp)
 };
 
@@ -96,6 +96,8 @@ void run_mesh(const MeshOptionsCli& opt) {
     options.core.fill_margin = opt.core_fill_margin;
     options.optimise.time_limit_ms = opt.optimise_ms;
     options.pad.ray_limit = opt.pad_ray_limit;
+    options.release_stuck = !opt.no_release;
+    options.feature_snap.one_edge_per_quad = opt.path_rule;
     // The pipeline's stages, then writing the file: "[mesh 11/14: optimise] 71% ...".
     std::size_t steps = 1;  // the pipeline's stages and writing the file
     const auto step = [&bar, &steps](std::string_view stage, std::size_t done) {
@@ -171,6 +173,7 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"curves", r.features.curves},
                       {"curves_snapped", r.features.curves_snapped},
                       {"curve_vertices", r.features.curve_vertices},
+                      {"quad_turns", r.features.quad_turns},
                       {"patch_moves", r.features.patch_moves},
                       {"min_chain", opt.feature_min_chain},
                       {"inverted_by_snap", r.features.inverted_by_snap},
@@ -226,6 +229,12 @@ void run_mesh(const MeshOptionsCli& opt) {
                       {"work_budget", r.optimise.work_budget},
                       {"hit_work_budget", r.optimise.hit_work_budget},
                       {"hit_time_limit", r.optimise.hit_time_limit}}},
+                    {"release",
+                     {{"bad_before", r.release.bad_before},
+                      {"bad_after", r.release.bad_after},
+                      {"curves_released", r.release.curves_released},
+                      {"corners_released", r.release.corners_released},
+                      {"work", r.release.work}}},
                     {"inverted_hexes", r.inverted_hexes.size()},
                     {"topology",
                      {{"manifold", t.manifold},
@@ -364,6 +373,11 @@ void register_mesh(CLI::App& app) {
                     "Pad: an outer vertex is the normal ray's hit if it is within this times (distance + edge), else "
                     "the closest point (default 2; 0: always the closest point)")
         ->check(CLI::Range(0.0, 100.0));
+    sub->add_flag("--feature-path-rule", opt->path_rule,
+                  "Features: a path takes no two edges of one boundary quad where the curve runs straight, unless "
+                  "no other path is found (opt-in)");
+    sub->add_flag("--no-release", opt->no_release,
+                  "Optimise: do not free the hexes left flat or inverted by releasing their feature roles");
     sub->add_flag("--accept-topology-change", opt->accept_topology_change,
                   "Exit 0 even if the boundary's components or Euler characteristics differ from the input's");
     add_threads_option(*sub, opt->threads);

@@ -19,6 +19,7 @@
 #include "dualhex/mesher/mesh_pipeline.hpp"
 #include "dualhex/mesher/project.hpp"
 #include "../mesher/src/corner_exits.hpp"  // internal: the exit matching
+#include "../mesher/src/feature_path_rule.hpp"  // internal: the one-edge-per-quad rule
 
 using namespace dualhex;
 using namespace dualhex::geometry;
@@ -110,6 +111,20 @@ TEST(MesherFeatures, CornerExitsMatchByDirection) {
     const std::vector<Eigen::Vector3d> two{{1, 0, 0}, {0.7, 0.7, 0}};
     EXPECT_EQ(assign_exits({{0.9, 0.44, 0}, {0.6, 0.8, 0}}, two), (std::vector<int>{0, 1}));
     EXPECT_EQ(assign_exits({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, dirs), (std::vector<int>{-1, -1, -1, -1}));
+}
+
+// A path (0,0) -> (1,0) -> (1,1) takes two edges of the unit quad: refused where the curve
+// runs straight across the quad (the three would be collinear on it), allowed where the
+// curve itself turns there.
+TEST(MesherFeatures, PathRuleRefusesATurnOnAStraightCurveOnly) {
+    using dualhex::mesher::detail::straight_on_line;
+    const Eigen::Vector3d p(0, 0, 0), u(1, 0, 0), v(1, 1, 0);
+    EXPECT_TRUE(straight_on_line(p, u, v, {{0, 0, 0}, {2, 2, 0}}));       // the diagonal
+    EXPECT_TRUE(straight_on_line(p, u, v, {{-1, 0.4, 0}, {3, 0.6, 0}}));  // nearly along x
+    EXPECT_TRUE(straight_on_line(p, u, v, {{0, 0, 0}, {1, 0.3, 0}, {2, 1.4, 0}}));  // bent by 31 degrees
+    EXPECT_FALSE(straight_on_line(p, u, v, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}));     // turns by 90 at u
+    EXPECT_FALSE(straight_on_line(p, u, v, {{0, 0, 0}, {1, 0, 0}, {1.5, 1, 0}}));   // by 63
+    EXPECT_TRUE(straight_on_line(p, u, v, {{5, 5, 5}, {5, 5, 6}}));  // all onto one end: collinear
 }
 
 TEST(MesherFeatures, CubeKeepsEdgesCornersAndVolume) {

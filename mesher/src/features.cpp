@@ -14,6 +14,7 @@
 #include "dualhex/geometry/quality.hpp"
 #include "dualhex/mesher/quality_state.hpp"
 #include "corner_exits.hpp"
+#include "feature_path_rule.hpp"
 #include "hex_edges.hpp"
 
 namespace dualhex::mesher {
@@ -29,7 +30,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct BoundaryGraph {
     std::vector<int> vertices;             // boundary vertex ids, ascending
     std::vector<std::vector<int>> adj;     // (points): boundary-edge neighbours
+    std::unordered_set<std::uint64_t> diagonals;  // edge_key of each boundary quad's two diagonals
     double mean_edge = 0;
+
+    // Whether a path a -> (a common neighbour) -> c takes two edges of one boundary quad:
+    // a and c are then its opposite corners (a quad is the only 4-cycle through a diagonal).
+    [[nodiscard]] bool turns_in_quad(int a, int c) const { return diagonals.contains(detail::edge_key(a, c)); }
 };
 
 BoundaryGraph boundary_graph(const HexMesh& mesh) {
@@ -37,7 +43,9 @@ BoundaryGraph boundary_graph(const HexMesh& mesh) {
     g.adj.resize(mesh.points.size());
     std::unordered_set<std::uint64_t> seen;
     double total = 0;
-    for (const auto& q : geometry::boundary_quads(mesh))
+    for (const auto& q : geometry::boundary_quads(mesh)) {
+        g.diagonals.insert(detail::edge_key(q[0], q[2]));
+        g.diagonals.insert(detail::edge_key(q[1], q[3]));
         for (int i = 0; i < 4; ++i) {
             const int a = q[static_cast<std::size_t>(i)], b = q[static_cast<std::size_t>((i + 1) % 4)];
             if (!seen.insert(detail::edge_key(a, b)).second) continue;
@@ -45,6 +53,7 @@ BoundaryGraph boundary_graph(const HexMesh& mesh) {
             g.adj[static_cast<std::size_t>(b)].push_back(a);
             total += (mesh.points[static_cast<std::size_t>(a)] - mesh.points[static_cast<std::size_t>(b)]).norm();
         }
+    }
     for (std::size_t v = 0; v < g.adj.size(); ++v)
         if (!g.adj[v].empty()) g.vertices.push_back(static_cast<int>(v));
     g.mean_edge = seen.empty() ? 0 : total / static_cast<double>(seen.size());
@@ -289,11 +298,21 @@ private:
     // Finds a path s -> t near `line` in widening tubes and moves its inner vertices onto it.
     bool snap_path(int s, int t, const Points& line, int id) {
         const double h = g_.mean_edge;
-        // the narrow tubes also keep clear of corners that still need their edges; the last
-        // attempt (anywhere) does not, so that a crowded corner can still be reached
-        for (const double tube : {3 * h, 12 * h, kInf}) {
-            const std::vector<int> path = shortest_path(s, t, line, tube, id);
+        // the narrow tubes also keep clear of corners that still need their edges; the
+        // attempts anywhere do not, so that a crowded corner can still be reached. A path
+        // taking two edges of one quad puts three of its corners on the curve (a flat pad
+        // hex, mesher/README.md): first without, then, if nothing else is found, with.
+        struct Attempt {
+            double tube;
+            bool one_edge_per_quad;
+        };
+        for (const Attempt a : {Attempt{3 * h, true}, Attempt{12 * h, true}, Attempt{12 * h, false},
+                                Attempt{kInf, true}, Attempt{kInf, false}}) {
+            if (!options_.one_edge_per_quad && a.one_edge_per_quad) continue;
+            const std::vector<int> path = shortest_path(s, t, line, a.tube, id, a.one_edge_per_quad);
             if (path.empty()) continue;
+            for (std::size_t i = 2; i < path.size(); ++i)
+                report_.quad_turns += straight_in_quad(path[i - 2], path[i - 1], path[i], line) ? 1 : 0;
             for (std::size_t i = 1; i < path.size(); ++i) {
                 used_edges_.insert(detail::edge_key(path[i - 1], path[i]));
                 report_.path_edges.push_back({path[i - 1], path[i], id});
@@ -321,6 +340,12 @@ private:
         return false;
     }
 
+    // Whether the path p -> u -> v takes two edges of one boundary quad where `line` runs
+    // straight (feature_path_rule.hpp).
+    [[nodiscard]] bool straight_in_quad(int p, int u, int v, const Points& line) const {
+        return g_.turns_in_quad(p, v) && detail::straight_on_line(at(p), at(u), at(v), line);
+    }
+
     // Whether v is reserved as another curve's exit from its corner.
     [[nodiscard]] bool reserved_for_other(int v, int curve) const {
         const auto it = exit_owner_.find(v);
@@ -328,9 +353,12 @@ private:
     }
 
     // Dijkstra over free boundary vertices within `tube` of `line` (t always allowed; in the
-    // narrow tubes neither starving a corner nor taking another curve's exit); the vertex
-    // ids s..t, or empty if t is unreachable.
-    [[nodiscard]] std::vector<int> shortest_path(int s, int t, const Points& line, double tube, int curve) const {
+    // narrow tubes neither starving a corner nor taking another curve's exit; with
+    // `one_edge_per_quad` no step continuing its predecessor's quad: a rule on the path
+    // found to each vertex, so a path it rules out elsewhere is only not searched); the
+    // vertex ids s..t, or empty if t is unreachable.
+    [[nodiscard]] std::vector<int> shortest_path(int s, int t, const Points& line, double tube, int curve,
+                                                 bool one_edge_per_quad) const {
         std::unordered_map<int, double> to_line, dist;
         std::unordered_map<int, int> prev;
         auto line_distance = [&](int v) {
@@ -354,6 +382,7 @@ private:
                                (narrow && (starves_corner(v, s, t) || reserved_for_other(v, curve)))))
                     continue;
                 if (used_edges_.contains(detail::edge_key(u, v))) continue;
+                if (one_edge_per_quad && u != s && straight_in_quad(prev.at(u), u, v, line)) continue;
                 const Eigen::Vector3d midpoint = 0.5 * (at(u) + at(v));
                 const double off = (line_distance(u) + line_distance(v) +
                                     2 * geometry::closest_on_polyline(line, false, midpoint).distance) / 4;

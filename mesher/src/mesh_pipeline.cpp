@@ -241,7 +241,7 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
         curves = moving_stage_curves(features);
         const std::vector<Eigen::Vector3d> before = result.mesh.points;
         const std::vector<double> sj_before = state.scaled_jacobian;
-        result.features = snap_features(result.mesh, features, result.constraints);
+        result.features = snap_features(result.mesh, features, result.constraints, options.feature_snap);
         result.features.patch_moves =
             project_to_patches(result.mesh, tree, features, result.constraints, result.features.path_edges);
         state = quality_state(result.mesh);
@@ -257,7 +257,11 @@ MeshPipelineResult mesh_surface(const AabbTree& tree, const MeshPipelineOptions&
     observe(options, "smooth", result, state);
     HexMesh& mesh = result.mesh;
     result.optimise = timed(options, "optimise", result, &MeshTimes::optimise, [&] {
-        return optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
+        OptimiseResult r = optimise_mesh(mesh, result.constraints, tree, curves, options.optimise, state);
+        if (options.release_stuck)
+            result.release = release_stuck_hexes(mesh, result.constraints, tree, curves, options.optimise, state,
+                                                 kFlatScaledJacobian);
+        return r;
     });
     observe(options, "optimise", result, state);
     result.topology = timed(options, "check", result, &MeshTimes::check, [&] {

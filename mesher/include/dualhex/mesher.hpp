@@ -17,6 +17,7 @@
 #include "dualhex/mesher/constrained_position.hpp"
 #include "dualhex/mesher/core_boundary_smooth.hpp"
 #include "dualhex/mesher/optimise.hpp"
+#include "dualhex/mesher/optimise_release.hpp"
 #include "dualhex/mesher/pad.hpp"
 #include "dualhex/mesher/select_core.hpp"
 #include "dualhex/mesher/surface_smooth.hpp"

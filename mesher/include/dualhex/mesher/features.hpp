@@ -42,6 +42,12 @@ namespace dualhex::mesher {
 struct FeatureSnapOptions {
     double path_weight = 10.0;      ///< weight of the distance to the curve in a path edge's cost
     double max_corner_move = 2.0;   ///< in mean boundary edge lengths
+    /// Paths take no two edges of one boundary quad in a row where the curve runs straight
+    /// (three of its corners on a straight piece of curve make its pad hex flat) unless no
+    /// path without is found. Opt-in (`dualhex mesh --feature-path-rule`): on tue_block it
+    /// cut such turns 369 -> 66 but doubled the hexes the snap inverted (622 -> 1228) and
+    /// raised the share below 0.5 (13.7 -> 15.9 %, mesher/README.md).
+    bool one_edge_per_quad = false;
 };
 
 /// A boundary edge of a snapped path, from -> to along its curve's direction.
@@ -54,6 +60,8 @@ struct FeatureSnapReport {
     std::size_t corners = 0, corners_snapped = 0;
     std::size_t curves = 0, curves_snapped = 0;  ///< curves whose whole path was found
     std::size_t curve_vertices = 0;              ///< vertices given the Curve role
+    /// Path vertices whose two path edges lie in one boundary quad where the curve runs straight.
+    std::size_t quad_turns = 0;
     std::size_t inverted_before = 0, inverted_after = 0;  ///< hexes with scaled Jacobian <= 0
     double max_move = 0;                         ///< largest vertex displacement (absolute)
     std::vector<PathEdge> path_edges;            ///< the snapped paths' boundary edges

@@ -52,6 +52,7 @@
 #include "dualhex/mesher/constrained_position.hpp"
 #include "dualhex/mesher/mesh_report.hpp"
 #include "dualhex/mesher/optimise.hpp"
+#include "dualhex/mesher/optimise_release.hpp"
 #include "dualhex/mesher/pad.hpp"
 #include "dualhex/mesher/core_selection.hpp"
 #include "dualhex/geometry/surface_distance.hpp"
@@ -84,9 +85,13 @@ struct MeshPipelineOptions : MeshSizeOptions {
     /// features (geometry::FeatureOptions::min_chain_length): on the shared surfaces the CAD
     /// models' chains are >= 0.17 of it, organic models' tessellation creases mostly < 0.1.
     double feature_min_chain = 0.1;
+    FeatureSnapOptions feature_snap;    ///< how the features stage snaps (features.hpp)
     CoreOptions core;
     PadOptions pad;
     OptimiseOptions optimise;           ///< optimise.min_quality: the target minimum scaled Jacobian
+    /// After the optimiser, within its stage: hexes left <= kFlatScaledJacobian freed on their
+    /// region, releasing the feature roles that hold them (optimise_release.hpp).
+    bool release_stuck = true;
     /// Called before each stage with its short name ("octree", "pair", ...) and the number
     /// of stages done of all of them (may be empty).
     Progress progress;
@@ -138,6 +143,7 @@ struct MeshPipelineResult {
     int smooth_iterations_done = 0;       ///< accepted interior Laplacian iterations
     int surface_smooth_iterations_done = 0;
     OptimiseResult optimise;
+    ReleaseResult release;                ///< the optimise stage's last step (zeros if off)
     TopologyCheck topology;
     /// Check stage: the hexes of `mesh` with scaled Jacobian <= kFlatScaledJacobian (or NaN),
     /// inverted or flat, in id order. Any is a failed check (the CLI exits 1), like a
