@@ -65,7 +65,8 @@ if(dualhex_fuzz_ok)
   endforeach()
   find_library(DUALHEX_FUZZ_GMPXX gmpxx)
   find_library(DUALHEX_FUZZ_GMP gmp)
-  find_library(DUALHEX_FUZZ_TBB tbb)  # the leaf grid's checks run in parallel (oneTBB)
+  # The leaf grid's checks and the surface tree's batched queries run in parallel (oneTBB).
+  find_library(DUALHEX_FUZZ_TBB tbb)
 
   # Seeds: the harness's own (tests/fuzz/seeds/<reader>) and the small shared files.
   file(GLOB shared_small ${DUALHEX_SHARED_DATA}/surfaces/* ${DUALHEX_SHARED_DATA}/grids/*)
@@ -86,7 +87,7 @@ if(dualhex_fuzz_ok)
       set(libs ${DUALHEX_FUZZ_TBB})
     else()
       set(objects ${surface_objects})
-      set(libs ${DUALHEX_FUZZ_GMPXX} ${DUALHEX_FUZZ_GMP})
+      set(libs ${DUALHEX_FUZZ_GMPXX} ${DUALHEX_FUZZ_GMP} ${DUALHEX_FUZZ_TBB})
     endif()
     set(harness_src ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${reader}.cpp)
     dualhex_fuzz_object(${harness_src} harness_obj)

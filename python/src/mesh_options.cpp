@@ -80,6 +80,7 @@ const std::vector<OptionBinding>& options_table() {
         nested_field("optimise_work", &Options::optimise, &mesher::OptimiseOptions::work_per_vertex),
         nested_field("optimise_ms", &Options::optimise, &mesher::OptimiseOptions::time_limit_ms),
         field("feature_min_chain", &Options::feature_min_chain),
+        field("release_stuck", &Options::release_stuck),
         nested_field("core_margin", &Options::core, &mesher::CoreOptions::margin),
         nested_field("core_fill_margin", &Options::core, &mesher::CoreOptions::fill_margin),
         nested_field("pad_ray_limit", &Options::pad, &mesher::PadOptions::ray_limit),

@@ -61,6 +61,10 @@ def test_options_map_onto_the_pipeline():
     m = dualhex.mesh(max_depth=4, smooth_iterations=0, balance="strong")
     assert m.report["options"]["smooth_iterations"] == 0 and m.report["smooth_iterations"] == 0
     assert m.report["options"]["balance"] == "strong"
+    assert defaults["release_stuck"] is True
+    assert dualhex.mesh(max_depth=4, release_stuck=False).report["options"]["release_stuck"] is False
+    with pytest.raises(TypeError):
+        dualhex.mesh(max_depth=4, release_stuck="no")
 
 
 def test_to_meshio_has_the_hexes_and_quality():
