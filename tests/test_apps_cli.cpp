@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "run_process.hpp"
+#include "scratch_dir.hpp"
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
@@ -22,16 +23,9 @@ namespace {
 using Result = dualhex::test::ProcessResult;
 using dualhex::test::slurp;
 
-class Cli : public ::testing::Test {
+class Cli : public dualhex::test::ScratchDirTest {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("dualhex_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    Cli() : ScratchDirTest("dualhex_cli_") {}
 
     Result run(const std::vector<std::string>& args) const { return dualhex::test::run_process(DUALHEX_EXE, args, dir_); }
 
@@ -41,7 +35,6 @@ protected:
         return p;
     }
 
-    fs::path dir_;
 };
 
 TEST_F(Cli, HelpOfEverySubcommand) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "run_process.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
@@ -24,23 +25,15 @@ const std::string kCubeOff =
     "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
     "3 0 2 1\n3 1 2 3\n3 4 5 6\n3 5 7 6\n3 0 1 4\n3 1 5 4\n3 2 6 3\n3 3 6 7\n3 0 4 2\n3 2 4 6\n3 1 3 5\n3 3 7 5\n";
 
-class HostileCli : public ::testing::Test {
+class HostileCli : public dualhex::test::ScratchDirTest {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("dualhex_hostile_cli_" + std::string(info->name()) + "_" +
-                                            std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    HostileCli() : ScratchDirTest("dualhex_hostile_cli_") {}
     Result run(const std::vector<std::string>& args) const { return dualhex::test::run_process(DUALHEX_EXE, args, dir_); }
     std::string write(const std::string& name, const std::string& text) const {
         std::ofstream(dir_ / name, std::ios::binary) << text;
         return (dir_ / name).string();
     }
     std::string grid() const { return write("root.leaves", "1 0 0 0\n1 1 0 0\n1 0 1 0\n1 1 1 0\n1 0 0 1\n1 1 0 1\n1 0 1 1\n1 1 1 1\n"); }
-    fs::path dir_;
 };
 
 void expect_rc(const Result& r, int rc, const std::string& in_stderr) {

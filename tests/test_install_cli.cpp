@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "run_process.hpp"
+#include "scratch_dir.hpp"
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -93,15 +94,9 @@ std::pair<long, long> parse_vtk(const fs::path& p, int type) {
     return {points, cells};
 }
 
-class InstallCli : public ::testing::Test {
+class InstallCli : public dualhex::test::ScratchDirTest {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("dualhex_install_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    InstallCli() : ScratchDirTest("dualhex_install_cli_") {}
 
     Result run(const std::vector<std::string>& args, const std::string& exe = DUALHEX_EXE) const {
         return dualhex::test::run_process(exe, args, dir_);
@@ -111,7 +106,6 @@ protected:
         std::ofstream(p) << text;
         return p;
     }
-    fs::path dir_;
 };
 
 TEST_F(InstallCli, SmallGridInstallsAndWritesBothFiles) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "run_process.hpp"
+#include "scratch_dir.hpp"
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
@@ -25,18 +26,11 @@ namespace {
 using Result = dualhex::test::ProcessResult;
 using dualhex::test::slurp;
 
-class MeshCli : public ::testing::Test {
+class MeshCli : public dualhex::test::ScratchDirTest {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("dualhex_mesh_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    MeshCli() : ScratchDirTest("dualhex_mesh_cli_") {}
 
     Result run(const std::vector<std::string>& args) const { return dualhex::test::run_process(DUALHEX_EXE, args, dir_); }
-    fs::path dir_;
 };
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_process.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,15 +29,9 @@ struct MeshRun {
     nlohmann::json report;  ///< --json without "ms" and "cpu_ms" (the times) and "output"
 };
 
-class MesherThreads : public ::testing::Test {
+class MesherThreads : public dualhex::test::ScratchDirTest {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("dualhex_mesher_threads_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    MesherThreads() : ScratchDirTest("dualhex_mesher_threads_") {}
 
     // `dualhex mesh [input] -o OUT --threads N --json` plus `extra`; OUT named by the run.
     MeshRun mesh(const std::string& input, int threads, const std::string& ext, std::vector<std::string> extra = {}) {
@@ -73,7 +68,6 @@ protected:
         }
     }
 
-    fs::path dir_;
     int runs_ = 0;
 };
 
