@@ -6,29 +6,27 @@
 #include <fstream>
 #include <iostream>
 #include <string>
-#include <unistd.h>
 
 #include "dualhex/grid/input_error.hpp"
 #include "dualhex/grid/leaf_file.hpp"
 #include "dualhex/grid/predicates.hpp"
 #include "dualhex/grid/refinement.hpp"
+#include "scratch_dir.hpp"
 
 using namespace dualhex;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path temp_dir() {
-    const fs::path dir = fs::temp_directory_path() / ("dualhex_grid_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir;
-}
-
-fs::path write_file(const std::string& name, const std::string& text) {
-    const fs::path path = temp_dir() / name;
-    std::ofstream(path) << text;
-    return path;
-}
+class LeafFile : public test::ScratchDirTest {
+protected:
+    LeafFile() : ScratchDirTest("dualhex_grid_test_") {}
+    fs::path write_file(const std::string& name, const std::string& text) const {
+        const fs::path path = dir_ / name;
+        std::ofstream(path) << text;
+        return path;
+    }
+};
 
 // The 8 children of the root, as leaf-file lines (a valid tiling).
 const std::string kEight = "1 0 0 0\n1 1 0 0\n1 0 1 0\n1 1 1 0\n1 0 0 1\n1 1 0 1\n1 0 1 1\n1 1 1 1\n";
@@ -42,10 +40,10 @@ struct BadFile {
 
 }  // namespace
 
-TEST(LeafFile, RoundTripThroughDisk) {
+TEST_F(LeafFile, RoundTripThroughDisk) {
     const LeafGrid g = pair(parse_leaves("# a comment\n\n0 0 0 0   # the root\n"), Balance::Strong);
     const LeafGrid refined = balance(parse_leaves(kEight), Balance::Strong);
-    const fs::path path = temp_dir() / "roundtrip.leaves";
+    const fs::path path = dir_ / "roundtrip.leaves";
     write_leaf_file(refined, path, "made by a test\nsecond header line");
     const LeafGrid back = read_leaf_file(path);
     EXPECT_EQ(back.leaves(), refined.leaves());
@@ -55,7 +53,7 @@ TEST(LeafFile, RoundTripThroughDisk) {
     EXPECT_EQ(g.size(), 1u);
 }
 
-TEST(LeafFile, CommentsBlankLinesAndWhitespace) {
+TEST_F(LeafFile, CommentsBlankLinesAndWhitespace) {
     const LeafGrid g = parse_leaves("# header\n\n\t1 0 0 0 # trailing\n1 1 0 0\r\n1 0 1 0\n1 1 1 0\n 1 0 0 1\n1 1 0 1\n"
                                     "1 0 1 1\n1   1 1 1\n# end",
                                     "x.leaves");
@@ -65,7 +63,7 @@ TEST(LeafFile, CommentsBlankLinesAndWhitespace) {
     EXPECT_EQ(g.counts_per_level(), (std::vector<std::size_t>{0, 8}));
 }
 
-TEST(LeafFile, BadFilesNameLineAndEntity) {
+TEST_F(LeafFile, BadFilesNameLineAndEntity) {
     const std::vector<BadFile> cases = {
         {"bad_token.leaves", "1 0 0 0\n1 x 0 0\n", 2, {"bad_token.leaves:2", "not an integer: 'x'", "'1 x 0 0'"}},
         {"float.leaves", "1 0.5 0 0\n", 1, {"not an integer: '0.5'"}},
@@ -105,11 +103,11 @@ TEST(LeafFile, BadFilesNameLineAndEntity) {
     }
 }
 
-TEST(LeafFile, MissingFileIsAnInputError) {
-    EXPECT_THROW((void)read_leaf_file(temp_dir() / "does_not_exist.leaves"), InputError);
+TEST_F(LeafFile, MissingFileIsAnInputError) {
+    EXPECT_THROW((void)read_leaf_file(dir_ / "does_not_exist.leaves"), InputError);
 }
 
-TEST(LeafFile, Reads172kLeavesQuickly) {
+TEST_F(LeafFile, Reads172kLeavesQuickly) {
     const fs::path path = fs::path(DUALHEX_SHARED_DATA) / "grids" / "sphere_strong_d7.leaves";
     const auto start = std::chrono::steady_clock::now();
     const LeafGrid g = read_leaf_file(path);
@@ -120,7 +118,7 @@ TEST(LeafFile, Reads172kLeavesQuickly) {
     std::cout << "read " << g.size() << " leaves in " << seconds << " s\n";
 }
 
-TEST(LeafFile, PredicateDiagnosticsNameFileAndLines) {
+TEST_F(LeafFile, PredicateDiagnosticsNameFileAndLines) {
     // 1 0 0 0 refined twice at the root centre: 3 3 3 3 shares a face with level-1 leaves.
     std::string text = "1 1 0 0\n1 0 1 0\n1 1 1 0\n1 0 0 1\n1 1 0 1\n1 0 1 1\n1 1 1 1\n";
     for (const char* l2 : {"2 0 0 0", "2 1 0 0", "2 0 1 0", "2 1 1 0", "2 0 0 1", "2 1 0 1", "2 0 1 1"})
