@@ -6,6 +6,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -271,4 +272,58 @@ TEST(MesherOptimise, TheFinalContractCheckRestoresTheStart) {
     EXPECT_EQ(m.points, start);
     EXPECT_FALSE(phase({1, 1, 1}));  // back to the cube's lattice: better
     EXPECT_EQ(m.points[v], Eigen::Vector3d(1, 1, 1));
+}
+
+// The quality phase's per-visit cache (VertexStarQuality) against local_quality, the plain
+// evaluation, on scrambled blocks: the same counts and the same minimum, bit for bit, at
+// random trial positions and at ones that collapse an edge (a term of length 0). And the
+// comparison sees a difference: a star kept while a neighbour moves (outside its contract)
+// disagrees with local_quality there.
+RC_GTEST_PROP(MesherOptimise, TheVertexStarCacheEqualsTheFullEvaluation, ()) {
+    HexMesh m = geometry_test::hex_block(3, 3, 3).mesh;
+    for (auto& p : m.points) {
+        if (on_box_boundary(p)) continue;
+        for (int a = 0; a < 3; ++a) p[a] += *rc::gen::inRange(-450, 451) / 1000.0;
+    }
+    const geometry::AabbTree tree(geometry_test::unit_cube_surface(0.0, 3.0));
+    const VertexConstraints constraints = VertexConstraints::interior(m.points.size());
+    const FeatureCurves no_curves;
+    const VertexDomain domain{tree, no_curves, constraints};
+    const detail::VertexHexes incidence(m);
+    std::vector<double> sj = geometry::scaled_jacobians(m);
+    detail::OptimiseContext c{m, domain, incidence, sj, 0.5, 0};
+    const auto v = static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(m.points.size())));
+    const detail::VertexStarQuality star(c, v);
+    std::vector<Eigen::Vector3d> trials{m.points[v]};
+    for (int t = 0; t < 8; ++t) {
+        Eigen::Vector3d d;
+        for (int a = 0; a < 3; ++a) d[a] = *rc::gen::inRange(-1500, 1501) / 1000.0;
+        trials.push_back(m.points[v] + d);
+    }
+    const auto& first_hex = m.hexes[static_cast<std::size_t>(incidence.hex[incidence.start[v]])];
+    const int other = first_hex[0] == static_cast<int>(v) ? first_hex[6] : first_hex[0];
+    trials.push_back(m.points[static_cast<std::size_t>(other)]);  // on another vertex: an edge of length 0
+    for (const Eigen::Vector3d& x : trials) {
+        const detail::LocalQuality a = star.at(x), b = detail::local_quality(c, v, x);
+        RC_ASSERT(a.inverted == b.inverted);
+        RC_ASSERT(a.bad == b.bad);
+        RC_ASSERT(std::bit_cast<std::uint64_t>(a.min) == std::bit_cast<std::uint64_t>(b.min));
+    }
+}
+
+TEST(MesherOptimise, AStaleVertexStarIsSeenToDiffer) {
+    HexMesh m = geometry_test::hex_block(3, 3, 3).mesh;
+    const geometry::AabbTree tree(geometry_test::unit_cube_surface(0.0, 3.0));
+    const VertexConstraints constraints = VertexConstraints::interior(m.points.size());
+    const FeatureCurves no_curves;
+    const VertexDomain domain{tree, no_curves, constraints};
+    const detail::VertexHexes incidence(m);
+    std::vector<double> sj = geometry::scaled_jacobians(m);
+    detail::OptimiseContext c{m, domain, incidence, sj, 0.5, 0};
+    const auto v = static_cast<std::size_t>(id(1, 1, 1));
+    const detail::VertexStarQuality star(c, v);
+    const Eigen::Vector3d x = m.points[v] + Eigen::Vector3d(0.1, -0.05, 0.02);
+    EXPECT_EQ(star.at(x).min, detail::local_quality(c, v, x).min);
+    m.points[static_cast<std::size_t>(id(2, 2, 2))] += Eigen::Vector3d(0.3, 0.2, -0.1);  // a vertex of v's hexes
+    EXPECT_NE(star.at(x).min, detail::local_quality(c, v, x).min);
 }

@@ -12,20 +12,12 @@ namespace dualhex::geometry {
 using Eigen::Vector3d;
 
 double scaled_jacobian(const std::array<Vector3d, 8>& x) {
-    // For corner c: its neighbours (a, b, d) such that (x[a]-x[c], x[b]-x[c], x[d]-x[c]) is
-    // right-handed on the reference cube.
-    static constexpr int kCorner[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
-                                          {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
     double worst = std::numeric_limits<double>::infinity();
     for (int c = 0; c < 8; ++c) {
-        Vector3d e[3];
-        for (int n = 0; n < 3; ++n) {
-            e[n] = x[kCorner[c][n]] - x[c];
-            const double len = e[n].norm();
-            if (!(len > 0)) return 0.0;
-            e[n] /= len;
-        }
-        worst = std::min(worst, e[0].dot(e[1].cross(e[2])));
+        const auto& n = kScaledJacobianCorners[c];
+        const std::optional<double> term = corner_scaled_jacobian(x[c], x[n[0]], x[n[1]], x[n[2]]);
+        if (!term) return 0.0;
+        worst = std::min(worst, *term);
     }
     return worst;
 }

@@ -18,14 +18,16 @@ LocalQuality local_quality(const OptimiseContext& c, std::size_t v, const Eigen:
     const Eigen::Vector3d keep = p;
     p = x;
     LocalQuality q;
-    for (std::size_t i = c.incidence.start[v]; i < c.incidence.start[v + 1]; ++i) {
-        const double s = geometry::scaled_jacobian(c.mesh, static_cast<std::size_t>(c.incidence.hex[i]));
-        if (!(s > 0)) ++q.inverted;
-        if (is_bad(s, c.bad_below)) ++q.bad;
-        q.min = std::min(q.min, std::isnan(s) ? -1.0 : s);
-    }
+    for (std::size_t i = c.incidence.start[v]; i < c.incidence.start[v + 1]; ++i)
+        count_hex(q, geometry::scaled_jacobian(c.mesh, static_cast<std::size_t>(c.incidence.hex[i])), c.bad_below);
     p = keep;
     return q;
+}
+
+void count_hex(LocalQuality& q, double s, double bad_below) {
+    if (!(s > 0)) ++q.inverted;
+    if (is_bad(s, bad_below)) ++q.bad;
+    q.min = std::min(q.min, std::isnan(s) ? -1.0 : s);
 }
 
 void move_vertex(OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x) {

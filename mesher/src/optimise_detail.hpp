@@ -2,7 +2,10 @@
 // Internal to the optimise stage: what its two phases share.
 #include <algorithm>
 #include <chrono>
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "dualhex/geometry/hex_output.hpp"
@@ -54,6 +57,28 @@ struct LocalQuality {
     }
 };
 [[nodiscard]] LocalQuality local_quality(const OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x);
+/// Counts one hex of scaled Jacobian s into q (as local_quality does).
+void count_hex(LocalQuality& q, double s, double bad_below);
+
+/// local_quality(c, v, x) for many trial positions x of one vertex v, bit for bit: of each
+/// hex at v, the corner terms whose tet does not read v are computed once here, so a trial
+/// costs only the terms that do (4 of the 8 on a hex with distinct vertices), folded in corner
+/// order as geometry::scaled_jacobian folds them. Valid while no other vertex moves.
+class VertexStarQuality {
+public:
+    VertexStarQuality(const OptimiseContext& c, std::size_t v);
+    [[nodiscard]] LocalQuality at(const Eigen::Vector3d& x) const;
+
+private:
+    struct HexTerms {
+        std::size_t hex = 0;
+        std::uint8_t reads_v = 0;                 // bit k: corner k's tet has v
+        std::array<std::optional<double>, 8> term;  // the others' terms (geometry/quality.hpp)
+    };
+    const OptimiseContext& c_;
+    std::size_t v_;
+    std::vector<HexTerms> hexes_;
+};
 
 /// Moves v to x and refreshes sj of its hexes.
 void move_vertex(OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x);

@@ -10,12 +10,12 @@ namespace dualhex::mesher::detail {
 namespace {
 
 // Up the numerical gradient of the local minimum SJ at x (central differences).
-Eigen::Vector3d min_sj_ascent(const OptimiseContext& c, std::size_t v, const Eigen::Vector3d& x, double h) {
+Eigen::Vector3d min_sj_ascent(const VertexStarQuality& star, const Eigen::Vector3d& x, double h) {
     Eigen::Vector3d g;
     for (int a = 0; a < 3; ++a) {
         Eigen::Vector3d dx = Eigen::Vector3d::Zero();
         dx[a] = h;
-        g[a] = local_quality(c, v, x + dx).min - local_quality(c, v, x - dx).min;
+        g[a] = star.at(x + dx).min - star.at(x - dx).min;
     }
     return g;
 }
@@ -30,14 +30,15 @@ Eigen::Vector3d centroid_mean(const OptimiseContext& c, std::size_t v) {
 // The best improving move of v among the candidates; true if v moved.
 bool improve_vertex(OptimiseContext& c, const BarrierEnergy& e, std::size_t v) {
     const Eigen::Vector3d x = c.mesh.points[v];
-    const LocalQuality q0 = local_quality(c, v, x);
+    const VertexStarQuality star(c, v);
+    const LocalQuality q0 = star.at(x);
     const double size = local_size(c, e, v);
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
     for (std::size_t i = c.incidence.start[v]; i < c.incidence.start[v + 1]; ++i)
         (void)e.hex(c.mesh, static_cast<std::size_t>(c.incidence.hex[i]), static_cast<int>(v), x, &g);
     const Eigen::Vector3d to_centroids = centroid_mean(c, v) - x;
     const std::array<Eigen::Vector3d, 3> directions{
-        c.domain.restrict(v, x, -g), c.domain.restrict(v, x, min_sj_ascent(c, v, x, 1e-4 * size)),
+        c.domain.restrict(v, x, -g), c.domain.restrict(v, x, min_sj_ascent(star, x, 1e-4 * size)),
         c.domain.restrict(v, x, to_centroids)};
     const std::array<double, 3> first_step{0.3 * size, 0.3 * size, to_centroids.norm()};
     LocalQuality best = q0;
@@ -48,7 +49,7 @@ bool improve_vertex(OptimiseContext& c, const BarrierEnergy& e, std::size_t v) {
         double step = first_step[k];
         for (int halving = 0; halving < 8; ++halving, step *= 0.5) {
             const Eigen::Vector3d y = c.domain.project(v, x + (step / len) * directions[k], x);
-            const LocalQuality q = local_quality(c, v, y);
+            const LocalQuality q = star.at(y);
             if (q.better_than(best)) {
                 best = q;
                 best_x = y;

@@ -11,6 +11,7 @@
 // Samples: the vertices and the centres of the boundary quads (faces of exactly one hex).
 // Distances are divided by the surface's bounding-box diagonal.
 #include <array>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,6 +20,26 @@
 #include "dualhex/geometry/hex_output.hpp"
 
 namespace dualhex::geometry {
+
+/// For corner c of a hex: its neighbours (a, b, d) such that (x[a]-x[c], x[b]-x[c], x[d]-x[c])
+/// is right-handed on the reference cube (VTK order, as Verdict).
+inline constexpr int kScaledJacobianCorners[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
+                                                      {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+
+/// One corner's term: det of the unit edge vectors from `corner` to a, b, d; nullopt if an
+/// edge has length 0 (or NaN), which makes the whole hex's value 0. scaled_jacobian is the
+/// minimum of the 8 terms in corner order (NaN terms do not lower it); code that re-evaluates
+/// only some corners and folds the same way gets the same bits.
+[[nodiscard]] inline std::optional<double> corner_scaled_jacobian(const Eigen::Vector3d& corner, const Eigen::Vector3d& a,
+                                                                  const Eigen::Vector3d& b, const Eigen::Vector3d& d) {
+    Eigen::Vector3d e[3] = {a - corner, b - corner, d - corner};
+    for (Eigen::Vector3d& v : e) {
+        const double len = v.norm();
+        if (!(len > 0)) return std::nullopt;
+        v /= len;
+    }
+    return e[0].dot(e[1].cross(e[2]));
+}
 
 [[nodiscard]] double scaled_jacobian(const std::array<Eigen::Vector3d, 8>& corners);
 [[nodiscard]] double scaled_jacobian(const HexMesh& mesh, std::size_t hex);
