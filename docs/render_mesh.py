@@ -2,7 +2,7 @@
 """A picture of a hex mesh and its cross-section, for the README (Python standard library only).
 
   docs/render_mesh.py MESH.vtk OUT.png [--cut-axis x|y|z] [--cut-at F] [--up x|y|z]
-                      [--azimuth DEG] [--elevation DEG] [--width W] [--height H]
+                      [--azimuth DEG] [--elevation DEG] [--width W] [--height H] [--force]
 
 Reads the legacy ASCII VTK that `dualhex mesh -o MESH.vtk` writes (points, VTK_HEXAHEDRON
 cells, the `scaled_jacobian` cell data), keeps the hexes whose centroid lies on the low side
@@ -14,6 +14,7 @@ shading, a z-buffer; nothing is smoothed or simplified, so what is seen is the m
 """
 import argparse
 import math
+import os
 import struct
 import sys
 import zlib
@@ -33,6 +34,18 @@ def read_vtk(path):
             tokens = f.read().split()
     except (OSError, UnicodeDecodeError) as e:
         fail(f"{path}: {e}")
+    try:
+        points, hexes, sj = parse_vtk(path, tokens)
+    except (ValueError, IndexError):
+        fail(f"{path}: a malformed or truncated POINTS, CELLS or scaled_jacobian section")
+    if any(i < 0 or i >= len(points) for h in hexes for i in h):
+        fail(f"{path}: a hexahedron refers to a point that is not in POINTS")
+    if sj is not None and len(sj) != len(hexes):
+        fail(f"{path}: {len(sj)} scaled_jacobian values for {len(hexes)} hexahedra")
+    return points, hexes, sj
+
+
+def parse_vtk(path, tokens):
     at = 0
 
     def find(word):
@@ -47,6 +60,8 @@ def read_vtk(path):
     n = int(tokens[at])
     at += 2
     coords = [float(t) for t in tokens[at:at + 3 * n]]
+    if len(coords) != 3 * n:
+        raise ValueError("truncated")
     points = [tuple(coords[3 * i:3 * i + 3]) for i in range(n)]
     find("CELLS")
     cells, at = int(tokens[at]), at + 2
@@ -208,7 +223,12 @@ def main():
     ap.add_argument("--elevation", type=float, default=25.0)
     ap.add_argument("--width", type=int, default=900)
     ap.add_argument("--height", type=int, default=700)
+    ap.add_argument("--force", action="store_true", help="overwrite PNG if it exists")
     args = ap.parse_args()
+    if os.path.exists(args.png) and not args.force:
+        fail(f"{args.png} exists (--force overwrites it)")
+    if not (0 < args.width <= 8192 and 0 < args.height <= 8192):
+        fail("--width and --height must be in 1..8192")
     points, hexes, sj = read_vtk(args.mesh)
     if not hexes:
         fail(f"{args.mesh}: no hexahedra")

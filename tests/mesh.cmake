@@ -49,3 +49,8 @@ dualhex_add_test(test_mesher_core_cleanup SOURCES test_mesher_core_cleanup.cpp D
 dualhex_add_test(test_mesher_threads SOURCES test_mesher_threads.cpp DEPS nlohmann_json::nlohmann_json)
 target_compile_definitions(test_mesher_threads PRIVATE DUALHEX_EXE="$<TARGET_FILE:dualhex>")
 add_dependencies(test_mesher_threads dualhex)
+
+# docs/render_mesh.py, the README's mesh picture: a cut block drawn, bad input refused.
+add_test(NAME docs_render_mesh
+         COMMAND ${_dualhex_python3} ${CMAKE_CURRENT_SOURCE_DIR}/render_mesh_test.py
+                 ${PROJECT_SOURCE_DIR}/docs/render_mesh.py ${CMAKE_CURRENT_BINARY_DIR}/docs_render_mesh)
