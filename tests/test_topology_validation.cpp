@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include <tbb/global_control.h>
+
 #include "dualhex/topology/complex_builder.hpp"
 #include "dualhex/topology/incidence.hpp"
 #include "dualhex/topology/primitives.hpp"
@@ -310,6 +312,53 @@ TEST(TopologyValidation, ReportPrintsPositions) {
     EXPECT_NE(text.find("INVALID"), std::string::npos);
     EXPECT_NE(text.find("DuplicateCell"), std::string::npos);
     EXPECT_NE(text.find("(1,0,0)"), std::string::npos);
+}
+
+// validate() runs in parallel over fixed blocks of 4096 ids on a large complex: its report
+// must be the serial loop's, entry for entry, at any thread count. An 18^3 block (6,859
+// vertices: two blocks of vertex ids) with two columns split into prisms, far apart in id
+// order, so that violations come from both blocks.
+TEST(TopologyValidation, ALargeComplexGetsTheSerialReportAtAnyThreadCount) {
+    constexpr int n = 18;
+    auto cells = box_cells(n, n, n);
+    std::vector<std::size_t> erased;
+    for (int column : {2, 15})
+        for (int z = 0; z < n; ++z) {
+            erased.push_back(cube_index(column, column, z, n, n));
+            const auto prisms = split_into_prisms(column, column, z);
+            cells.insert(cells.end(), prisms.begin(), prisms.end());
+        }
+    std::sort(erased.rbegin(), erased.rend());
+    for (std::size_t at : erased) cells.erase(cells.begin() + static_cast<std::ptrdiff_t>(at));
+    const CellComplex k = build(cells);
+    ASSERT_GT(k.n_vertices(), 4096u);
+    const auto run = [&](int threads) {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+        return validate(k);
+    };
+    const ValidationReport one = run(1), four = run(4);
+    ASSERT_EQ(one.violations.size(), four.violations.size());
+    for (std::size_t i = 0; i < one.violations.size(); ++i) {
+        const Violation &a = one.violations[i], &b = four.violations[i];
+        EXPECT_TRUE(a.kind == b.kind && a.vertex == b.vertex && a.edge == b.edge && a.face == b.face &&
+                    a.cell == b.cell && a.message == b.message)
+            << i;
+    }
+    EXPECT_EQ(one.per_kind, four.per_kind);
+    EXPECT_EQ(one.checked_vertices, static_cast<std::size_t>((n - 1) * (n - 1) * (n - 1)));
+    EXPECT_EQ(four.checked_vertices, one.checked_vertices);
+    EXPECT_EQ(four.checked_edges, one.checked_edges);
+    // The serial order: interior vertices by id (all their violations before the edges'),
+    // from both blocks.
+    std::vector<std::size_t> vertex_ids;
+    for (const Violation& v : four.violations)
+        if (v.vertex.valid()) vertex_ids.push_back(v.vertex.index());
+    ASSERT_FALSE(vertex_ids.empty());
+    EXPECT_TRUE(std::is_sorted(vertex_ids.begin(), vertex_ids.end()));
+    EXPECT_LT(vertex_ids.front(), 4096u);
+    EXPECT_GE(vertex_ids.back(), 4096u);
+    for (int column : {2, 15})
+        EXPECT_TRUE(four.has(ViolationKind::VertexValence, vertex_at(k, {column, column, n / 2}))) << column;
 }
 
 }  // namespace

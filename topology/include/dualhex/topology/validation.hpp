@@ -63,7 +63,8 @@ struct Violation {
 
 struct ValidationOptions {
     /// Which vertices get the interior checks (3), (4); empty = all interior vertices.
-    /// An interior edge is checked iff both its endpoints are accepted.
+    /// An interior edge is checked iff both its endpoints are accepted. On a large complex
+    /// it is called from several threads at once (validate runs in parallel): it must only read.
     std::function<bool(VertexHandle)> interior_filter;
     /// Skip (3) and (4) entirely (e.g. for a single atomic element).
     bool check_interior = true;
