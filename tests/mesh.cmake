@@ -32,6 +32,7 @@ dualhex_add_test(test_mesher_features SOURCES test_mesher_features.cpp DEPS dual
 # the mesher's core, pad, optimise and check stages on hand-made meshes
 dualhex_add_test(test_mesher_optimise SOURCES test_mesher_optimise.cpp DEPS dualhex::mesher)
 dualhex_add_test(test_mesher_optimise_release SOURCES test_mesher_optimise_release.cpp DEPS dualhex::mesher)
+dualhex_add_test(test_mesher_place_guard SOURCES test_mesher_place_guard.cpp DEPS dualhex::mesher)
 dualhex_add_test(test_mesher_hex_energy SOURCES test_mesher_hex_energy.cpp DEPS dualhex::mesher)
 dualhex_add_test(test_mesher_pad SOURCES test_mesher_pad.cpp DEPS dualhex::mesher)
 # the pad on folded cores, the bad-hex diagnostic (mesher/pad_diagnosis.hpp)

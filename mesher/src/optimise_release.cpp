@@ -5,6 +5,7 @@
 #include <array>
 
 #include "dualhex/geometry/quality.hpp"
+#include "place_guard.hpp"
 
 namespace dualhex::mesher {
 namespace {
@@ -48,6 +49,19 @@ void release(const geometry::HexMesh& mesh, const std::vector<std::size_t>& hexe
         }
 }
 
+// The roles released in this step (differing from `roles`) of the vertices that did not
+// move or were put back: their release changed nothing, so they keep their role (no
+// crease where nothing moved) and are not counted.
+void keep_unmoved_roles(const geometry::HexMesh& mesh, const std::vector<Eigen::Vector3d>& before,
+                        const VertexConstraints& roles, VertexConstraints& c, ReleaseResult& result) {
+    for (std::size_t u = 0; u < mesh.points.size(); ++u) {
+        if (c.role[u] == roles.role[u] || mesh.points[u] != before[u]) continue;
+        --(roles.role[u] == VertexRole::Curve ? result.curves_released : result.corners_released);
+        c.role[u] = roles.role[u];
+        c.curve[u] = roles.curve[u];
+    }
+}
+
 }  // namespace
 
 ReleaseResult release_stuck_hexes(geometry::HexMesh& mesh, VertexConstraints& constraints,
@@ -72,6 +86,10 @@ ReleaseResult release_stuck_hexes(geometry::HexMesh& mesh, VertexConstraints& co
             result.corners_released == counts.corners_released)
             continue;  // nothing held them: the same run again would change nothing
         result.work += optimise_region(mesh, bad, 2, constraints, tree, curves, local).work;
+        // The run's own contract is on all its hexes at once (and leaves out the hexes
+        // <= flat): one place's loss hides behind another's gain. Each place judged alone.
+        result.places_restored += detail::restore_worse_places(mesh, points, state.scaled_jacobian, flat, false).restored;
+        keep_unmoved_roles(mesh, points, roles, constraints, result);
         const QualityState after = quality_state(mesh);
         const std::vector<std::size_t> left = hexes_at_most(after.scaled_jacobian, flat);
         if (left.size() < bad.size() && after.inverted <= state.inverted) {
@@ -80,9 +98,10 @@ ReleaseResult release_stuck_hexes(geometry::HexMesh& mesh, VertexConstraints& co
         } else {
             mesh.points = points;
             constraints = roles;
-            const std::size_t work = result.work;
+            const std::size_t work = result.work, restored = result.places_restored;
             result = counts;
             result.work = work;
+            result.places_restored = restored;
         }
     }
     result.bad_after = bad.size();
