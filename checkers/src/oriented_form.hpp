@@ -57,21 +57,36 @@ template <class Move>
 [[nodiscard]] OrientedForm oriented_form(const CellComplex& k, Move&& move, bool reflect) {
     using namespace oriented_form_detail;
     OrientedForm out;
-    std::vector<std::int64_t> moved;  // per vertex, packed once: a vertex is on many loops
+    // Scratch kept per thread: forms are computed for tens of thousands of small complexes
+    // (every compositional member), where the buffers' allocations cost as much as the work.
+    struct Scratch {
+        std::vector<std::int64_t> moved, points, cells_buffer, faces_buffer, loop;
+        std::vector<Span> cells, faces;
+    };
+    thread_local Scratch scratch;
+    std::vector<std::int64_t>& moved = scratch.moved;  // per vertex, packed once: a vertex is on many loops
+    moved.clear();
     moved.reserve(k.n_vertices());
     for (const LatticePoint& p : k.positions()) {
         const LatticePoint q = move(p);
         if (!packable(q)) return {};
         moved.push_back(pack(q));
     }
-    std::vector<std::int64_t> points = moved;
+    std::vector<std::int64_t>& points = scratch.points;
+    points.assign(moved.begin(), moved.end());
     std::sort(points.begin(), points.end());
     out.push_back(static_cast<std::int64_t>(points.size()));
     out.insert(out.end(), points.begin(), points.end());
 
-    std::vector<std::int64_t> cells_buffer, faces_buffer;
-    std::vector<Span> cells, faces;
-    std::vector<std::int64_t> loop;
+    std::vector<std::int64_t>& cells_buffer = scratch.cells_buffer;
+    std::vector<std::int64_t>& faces_buffer = scratch.faces_buffer;
+    std::vector<Span>& cells = scratch.cells;
+    std::vector<Span>& faces = scratch.faces;
+    std::vector<std::int64_t>& loop = scratch.loop;
+    cells_buffer.clear();
+    cells.clear();
+    // An upper bound: every face is on at most two cells.
+    out.reserve(2 + points.size() + k.n_cells() + 2 * (k.n_faces() + k.face_loops().size()));
     for (std::size_t c = 0; c < k.n_cells(); ++c) {
         faces_buffer.clear();
         faces.clear();

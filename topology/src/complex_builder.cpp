@@ -1,6 +1,7 @@
 #include "dualhex/topology/complex_builder.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
@@ -23,9 +24,16 @@ void ComplexBuilder::reserve(std::size_t n_vertices, std::size_t n_faces, std::s
     cell_halffaces_.reserve(6 * n_cells);
 }
 
+void ComplexBuilder::grow_vertex_cache() {
+    // At least twice the current size (growth is called once positions reach half of it).
+    const std::size_t wanted = std::bit_ceil(std::max(kVertexCacheMin, 4 * positions_.size()));
+    vertex_cache_.assign(std::min(wanted, kVertexCacheSize), CachedVertex{});
+}
+
 VertexHandle ComplexBuilder::add_vertex(const LatticePoint& p) {
+    if (vertex_cache_.size() < kVertexCacheSize && positions_.size() >= vertex_cache_.size() / 2) grow_vertex_cache();
     const std::uint64_t hash = point_hash(p);
-    CachedVertex& cached = vertex_cache_[(hash >> 20) & (kVertexCacheSize - 1)];
+    CachedVertex& cached = vertex_cache_[(hash >> 20) & (vertex_cache_.size() - 1)];
     if (cached.id >= 0 && cached.p == p) return VertexHandle(cached.id);
     const auto id = static_cast<std::int32_t>(positions_.size());
     const auto [found, inserted] = vertex_table_.insert(

@@ -110,9 +110,15 @@ DerivedEdges derive_edges(std::size_t nv, const std::vector<std::uint32_t>& face
     const std::size_t blocks = n_blocks(nf);
     const auto block_faces = [&](std::size_t b) { return nf * b / blocks; };
 
+    // Runs f(b) for every block; one block runs inline (a small complex: the tasks would
+    // cost more than the work).
+    const auto for_blocks = [&](auto&& f) {
+        if (blocks == 1) f(std::size_t{0});
+        else tbb::parallel_for(std::size_t{0}, blocks, f);
+    };
     // 1. Per block, the number of sides per smaller endpoint.
     std::vector<std::uint32_t> cursor(blocks * nv, 0);
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    for_blocks([&](std::size_t b) {
         std::uint32_t* count = cursor.data() + b * nv;
         loops.sides(block_faces(b), block_faces(b + 1), [&](std::uint32_t, std::uint32_t a, std::uint32_t) { ++count[a]; });
     });
@@ -132,7 +138,7 @@ DerivedEdges derive_edges(std::size_t nv, const std::vector<std::uint32_t>& face
     bucket[nv] = running;
     // 3. Scatter: per slot the larger endpoint and the corner.
     std::vector<std::uint32_t> other(n_corners), corner_of(n_corners);
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    for_blocks([&](std::size_t b) {
         std::uint32_t* slot = cursor.data() + b * nv;
         loops.sides(block_faces(b), block_faces(b + 1), [&](std::uint32_t c, std::uint32_t a, std::uint32_t far) {
             const std::uint32_t s = slot[a]++;

@@ -95,8 +95,14 @@ private:
         LatticePoint p;
         std::int32_t id = -1;
     };
+    // Sized to the complex (a power of two, about twice the vertices so far, at most
+    // kVertexCacheSize) and regrown empty as it grows: a small complex (a window, an element)
+    // does not pay for zeroing the full cache. Emptying a cache loses no weld: misses go to
+    // vertex_table_.
     static constexpr std::size_t kVertexCacheSize = 4096;
-    std::vector<CachedVertex> vertex_cache_ = std::vector<CachedVertex>(kVertexCacheSize);
+    static constexpr std::size_t kVertexCacheMin = 64;
+    std::vector<CachedVertex> vertex_cache_;
+    void grow_vertex_cache();
     // Faces keyed by their smallest vertex (the first of the stored loop), see LocalIdTable.
     detail::LocalIdTable face_table_;
     std::vector<VertexHandle> scratch_;
