@@ -274,6 +274,27 @@ TEST(MesherOptimise, TheFinalContractCheckRestoresTheStart) {
     EXPECT_EQ(m.points[v], Eigen::Vector3d(1, 1, 1));
 }
 
+namespace {
+
+// What a VertexStarQuality reads: the optimiser's context over mesh m (all vertices
+// interior, the cube [0,3]^3 as surface, bad below 0.5).
+struct StarFixture {
+    const geometry::AabbTree tree{geometry_test::unit_cube_surface(0.0, 3.0)};
+    const VertexConstraints constraints;
+    const FeatureCurves no_curves;
+    const VertexDomain domain{tree, no_curves, constraints};
+    const detail::VertexHexes incidence;
+    std::vector<double> sj;
+    detail::OptimiseContext context;
+    explicit StarFixture(HexMesh& m)
+        : constraints(VertexConstraints::interior(m.points.size())),
+          incidence(m),
+          sj(geometry::scaled_jacobians(m)),
+          context{m, domain, incidence, sj, 0.5, 0} {}
+};
+
+}  // namespace
+
 // The quality phase's per-visit cache (VertexStarQuality) against local_quality, the plain
 // evaluation, on scrambled blocks: the same counts and the same minimum, bit for bit, at
 // random trial positions and at ones that collapse an edge (a term of length 0). And the
@@ -285,13 +306,8 @@ RC_GTEST_PROP(MesherOptimise, TheVertexStarCacheEqualsTheFullEvaluation, ()) {
         if (on_box_boundary(p)) continue;
         for (int a = 0; a < 3; ++a) p[a] += *rc::gen::inRange(-450, 451) / 1000.0;
     }
-    const geometry::AabbTree tree(geometry_test::unit_cube_surface(0.0, 3.0));
-    const VertexConstraints constraints = VertexConstraints::interior(m.points.size());
-    const FeatureCurves no_curves;
-    const VertexDomain domain{tree, no_curves, constraints};
-    const detail::VertexHexes incidence(m);
-    std::vector<double> sj = geometry::scaled_jacobians(m);
-    detail::OptimiseContext c{m, domain, incidence, sj, 0.5, 0};
+    StarFixture f(m);
+    detail::OptimiseContext& c = f.context;
     const auto v = static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(m.points.size())));
     const detail::VertexStarQuality star(c, v);
     std::vector<Eigen::Vector3d> trials{m.points[v]};
@@ -300,7 +316,7 @@ RC_GTEST_PROP(MesherOptimise, TheVertexStarCacheEqualsTheFullEvaluation, ()) {
         for (int a = 0; a < 3; ++a) d[a] = *rc::gen::inRange(-1500, 1501) / 1000.0;
         trials.push_back(m.points[v] + d);
     }
-    const auto& first_hex = m.hexes[static_cast<std::size_t>(incidence.hex[incidence.start[v]])];
+    const auto& first_hex = m.hexes[static_cast<std::size_t>(f.incidence.hex[f.incidence.start[v]])];
     const int other = first_hex[0] == static_cast<int>(v) ? first_hex[6] : first_hex[0];
     trials.push_back(m.points[static_cast<std::size_t>(other)]);  // on another vertex: an edge of length 0
     for (const Eigen::Vector3d& x : trials) {
@@ -313,13 +329,8 @@ RC_GTEST_PROP(MesherOptimise, TheVertexStarCacheEqualsTheFullEvaluation, ()) {
 
 TEST(MesherOptimise, AStaleVertexStarIsSeenToDiffer) {
     HexMesh m = geometry_test::hex_block(3, 3, 3).mesh;
-    const geometry::AabbTree tree(geometry_test::unit_cube_surface(0.0, 3.0));
-    const VertexConstraints constraints = VertexConstraints::interior(m.points.size());
-    const FeatureCurves no_curves;
-    const VertexDomain domain{tree, no_curves, constraints};
-    const detail::VertexHexes incidence(m);
-    std::vector<double> sj = geometry::scaled_jacobians(m);
-    detail::OptimiseContext c{m, domain, incidence, sj, 0.5, 0};
+    StarFixture f(m);
+    detail::OptimiseContext& c = f.context;
     const auto v = static_cast<std::size_t>(id(1, 1, 1));
     const detail::VertexStarQuality star(c, v);
     const Eigen::Vector3d x = m.points[v] + Eigen::Vector3d(0.1, -0.05, 0.02);

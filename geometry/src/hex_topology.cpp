@@ -2,29 +2,15 @@
 #include "dualhex/geometry/hex_topology.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
 
 #include "dualhex/geometry/quality.hpp"
+#include "dualhex/geometry/union_find.hpp"
 
 namespace dualhex::geometry {
 namespace {
-
-struct UnionFind {
-    std::vector<std::size_t> parent;
-    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
-    std::size_t find(std::size_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(std::size_t a, std::size_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);  // smaller root: deterministic
-    }
-};
 
 // A face use: its canonical key (smallest id first, then the smaller neighbour second),
 // whether the hex traverses it against the key's direction, and where it came from.
