@@ -3,7 +3,7 @@
 // to an "after" position: A ends with more hexes <= flat, C with a lower minimum, B better
 // in all three. The whole block after has fewer hexes <= flat and a higher minimum than
 // before (a check on the whole run accepts it); the guard puts A and C back and keeps B.
-// With need_better, a place neither worse nor better is put back too.
+// A place neither worse nor better is kept.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,22 +53,20 @@ TEST(MesherPlaceGuard, TheWholeBlockLooksBetter) {
 }
 
 TEST(MesherPlaceGuard, PutsBackThePlacesLeftWorse) {
-    for (bool need_better : {false, true}) {
-        ThreePlaces f;
-        const std::vector<Eigen::Vector3d> moved = f.mesh.points;
-        const auto r = mesher::detail::restore_worse_places(f.mesh, f.before, f.sj_before, kFlat, need_better);
-        EXPECT_EQ(r.places, 3u);
-        EXPECT_EQ(r.restored, 2u);
-        EXPECT_EQ(f.mesh.points[f.a], f.before[f.a]);
-        EXPECT_EQ(f.mesh.points[f.b], moved[f.b]);
-        EXPECT_EQ(f.mesh.points[f.c], f.before[f.c]);
-        // A and C's hexes are as before bit for bit; none is worse than before.
-        const std::vector<double> sj = geometry::scaled_jacobians(f.mesh);
-        for (std::size_t h = 0; h < sj.size(); ++h) EXPECT_GE(sj[h], f.sj_before[h]) << "hex " << h;
-    }
+    ThreePlaces f;
+    const std::vector<Eigen::Vector3d> moved = f.mesh.points;
+    const auto r = mesher::detail::restore_worse_places(f.mesh, f.before, f.sj_before, kFlat);
+    EXPECT_EQ(r.places, 3u);
+    EXPECT_EQ(r.restored, 2u);
+    EXPECT_EQ(f.mesh.points[f.a], f.before[f.a]);
+    EXPECT_EQ(f.mesh.points[f.b], moved[f.b]);
+    EXPECT_EQ(f.mesh.points[f.c], f.before[f.c]);
+    // A and C's hexes are as before bit for bit; none is worse than before.
+    const std::vector<double> sj = geometry::scaled_jacobians(f.mesh);
+    for (std::size_t h = 0; h < sj.size(); ++h) EXPECT_GE(sj[h], f.sj_before[h]) << "hex " << h;
 }
 
-TEST(MesherPlaceGuard, NeedBetterPutsBackAPlaceNoBetter) {
+TEST(MesherPlaceGuard, APlaceNeitherWorseNorBetterIsKept) {
     // One hex whose corner 0 sits on corner 1 (an edge of length 0: scaled Jacobian exactly
     // 0), moved onto corner 3: still exactly 0, so neither worse nor better.
     HexMesh mesh = geometry_test::hex_block(1, 1, 1).mesh;
@@ -81,18 +79,16 @@ TEST(MesherPlaceGuard, NeedBetterPutsBackAPlaceNoBetter) {
     mesh.points[v] = mesh.points[corner(3)];
     ASSERT_EQ(geometry::scaled_jacobian(mesh, 0), 0.0);
     HexMesh kept = mesh;
-    EXPECT_EQ(mesher::detail::restore_worse_places(kept, before, sj_before, kFlat, false).restored, 0u);
-    EXPECT_EQ(kept.points[v], mesh.points[v]);
-    const auto r = mesher::detail::restore_worse_places(mesh, before, sj_before, kFlat, true);
+    const auto r = mesher::detail::restore_worse_places(kept, before, sj_before, kFlat);
     EXPECT_EQ(r.places, 1u);
-    EXPECT_EQ(r.restored, 1u);
-    EXPECT_EQ(mesh.points[v], before[v]);
+    EXPECT_EQ(r.restored, 0u);
+    EXPECT_EQ(kept.points[v], mesh.points[v]);
 }
 
 TEST(MesherPlaceGuard, NothingMovedNothingToJudge) {
     ThreePlaces f;
     f.mesh.points = f.before;
-    const auto r = mesher::detail::restore_worse_places(f.mesh, f.before, f.sj_before, kFlat, true);
+    const auto r = mesher::detail::restore_worse_places(f.mesh, f.before, f.sj_before, kFlat);
     EXPECT_EQ(r.places, 0u);
     EXPECT_EQ(f.mesh.points, f.before);
 }

@@ -88,7 +88,7 @@ ReleaseResult release_stuck_hexes(geometry::HexMesh& mesh, VertexConstraints& co
         result.work += optimise_region(mesh, bad, 2, constraints, tree, curves, local).work;
         // The run's own contract is on all its hexes at once (and leaves out the hexes
         // <= flat): one place's loss hides behind another's gain. Each place judged alone.
-        result.places_restored += detail::restore_worse_places(mesh, points, state.scaled_jacobian, flat, false).restored;
+        result.places_restored += detail::restore_worse_places(mesh, points, state.scaled_jacobian, flat).restored;
         keep_unmoved_roles(mesh, points, roles, constraints, result);
         const QualityState after = quality_state(mesh);
         const std::vector<std::size_t> left = hexes_at_most(after.scaled_jacobian, flat);

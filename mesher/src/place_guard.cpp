@@ -3,25 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "dualhex/geometry/quality.hpp"
+#include "dualhex/geometry/union_find.hpp"
 
 namespace dualhex::mesher::detail {
 namespace {
-
-struct Dsu {
-    std::vector<std::size_t> up;
-    explicit Dsu(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), std::size_t{0}); }
-    std::size_t root(std::size_t x) {
-        while (up[x] != x) x = up[x] = up[up[x]];
-        return x;
-    }
-    void join(std::size_t a, std::size_t b) {
-        a = root(a), b = root(b);
-        if (a != b) up[std::max(a, b)] = std::min(a, b);  // the smallest vertex is the root
-    }
-};
 
 struct PlaceQuality {
     std::size_t inverted = 0, flat = 0;
@@ -36,18 +23,15 @@ struct PlaceQuality {
 bool worse(const PlaceQuality& after, const PlaceQuality& before) {
     return after.inverted > before.inverted || after.flat > before.flat || after.min < before.min;
 }
-bool better(const PlaceQuality& after, const PlaceQuality& before) {
-    return after.inverted < before.inverted || after.flat < before.flat || after.min > before.min;
-}
 
 }  // namespace
 
 PlaceGuardResult restore_worse_places(geometry::HexMesh& mesh, const std::vector<Eigen::Vector3d>& before,
-                                      const std::vector<double>& sj_before, double flat, bool need_better) {
+                                      const std::vector<double>& sj_before, double flat) {
     const std::size_t n = mesh.points.size();
     std::vector<char> moved(n, 0);
     for (std::size_t v = 0; v < n; ++v) moved[v] = mesh.points[v] != before[v];
-    Dsu places(n);
+    geometry::UnionFind places(n);  // a place is named by its smallest vertex
     std::vector<std::size_t> touched;  // hexes with a moved corner, in hex order
     for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
         std::size_t first = n;
@@ -55,7 +39,7 @@ PlaceGuardResult restore_worse_places(geometry::HexMesh& mesh, const std::vector
             const auto u = static_cast<std::size_t>(v);
             if (!moved[u]) continue;
             if (first == n) first = u;
-            places.join(first, u);
+            places.unite(first, u);
         }
         if (first != n) touched.push_back(h);
     }
@@ -63,23 +47,22 @@ PlaceGuardResult restore_worse_places(geometry::HexMesh& mesh, const std::vector
     for (std::size_t h : touched) {
         std::size_t root = n;
         for (int v : mesh.hexes[h])
-            if (moved[static_cast<std::size_t>(v)]) root = places.root(static_cast<std::size_t>(v));
+            if (moved[static_cast<std::size_t>(v)]) root = places.find(static_cast<std::size_t>(v));
         was[root].add(sj_before[h], flat);
         is[root].add(geometry::scaled_jacobian(mesh, h), flat);
     }
     PlaceGuardResult result;
     std::vector<char> put_back(n, 0);
     for (std::size_t v = 0; v < n; ++v) {
-        if (!moved[v] || places.root(v) != v) continue;
+        if (!moved[v] || places.find(v) != v) continue;
         ++result.places;
-        const bool keep = !worse(is[v], was[v]) && (!need_better || better(is[v], was[v]));
-        if (!keep) {
+        if (worse(is[v], was[v])) {
             put_back[v] = 1;
             ++result.restored;
         }
     }
     for (std::size_t v = 0; v < n; ++v)
-        if (moved[v] && put_back[places.root(v)]) mesh.points[v] = before[v];
+        if (moved[v] && put_back[places.find(v)]) mesh.points[v] = before[v];
     return result;
 }
 

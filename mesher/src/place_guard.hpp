@@ -11,8 +11,8 @@
 // they share; its hexes are those with a moved corner. Hexes without one are unchanged.
 // Compared before (`sj_before`) and after: hexes inverted (<= 0 or NaN), hexes <= `flat`,
 // their minimum. Put back (positions of its vertices = `before`, so its hexes' values are
-// those of `sj_before` again, bit for bit) if any of the three is worse, or, with
-// `need_better`, unless none is worse and one is better. Serial, in vertex order.
+// those of `sj_before` again, bit for bit) if any of the three is worse. Serial, in vertex
+// order.
 #include <cstddef>
 #include <vector>
 
@@ -26,6 +26,6 @@ struct PlaceGuardResult {
 };
 
 PlaceGuardResult restore_worse_places(geometry::HexMesh& mesh, const std::vector<Eigen::Vector3d>& before,
-                                      const std::vector<double>& sj_before, double flat, bool need_better);
+                                      const std::vector<double>& sj_before, double flat);
 
 }  // namespace dualhex::mesher::detail
