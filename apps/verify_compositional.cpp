@@ -88,8 +88,17 @@ CheckOutcome check_compositional_weak() {
         if (v.ok() && at.front() + 3 == at.back()) ++spread_valid;
         else if (spread_failure.empty()) spread_failure = "corner " + std::to_string(corner) + ": " + v.summary();
     }
+    const WeakStarInfluence influence = weak_star_influence(WeakRule(), library);
+    // W12: the one pair the star search cannot finish (parity 111, v = g, the 8 leaves of
+    // level m) is a corner pair, checked leaf by leaf and quadrant by quadrant.
+    WeakStarOptions odd;
+    odd.parities = 0x80;
+    odd.vertex = [](const LatticePoint& v) { return v == LatticePoint{}; };
+    odd.corner_pairs = CornerPairs::Always;
+    const WeakStarCheck corner = run_weak_stars(WeakRule(), library, influence, odd);
+    const bool corner_ok = corner.pairs == 1 && corner.corner_pairs == 1 && corner.all_passed();
     CheckOutcome out;
-    out.status = r.all_passed() && spread_valid == 8 ? CheckStatus::kPass : CheckStatus::kFail;
+    out.status = r.all_passed() && spread_valid == 8 && corner_ok ? CheckStatus::kPass : CheckStatus::kFail;
     out.summary = "weak lemma " + std::to_string(r.lemma_plain) + "/" + std::to_string(r.lemma_contexts) +
                   " contexts plain; visible domain " + std::to_string(r.visible_contexts) + " contexts (" +
                   std::to_string(r.placed) + " placed, " + std::to_string(r.plain) + " plain, " +
@@ -97,7 +106,8 @@ CheckOutcome check_compositional_weak() {
                   std::to_string(r.nonconcave_ignored) + "/" + std::to_string(r.nonconcave_contexts) +
                   "; levels " + std::to_string(at.front()) + ".." + std::to_string(at.back()) +
                   " at one point, 8 orientations installed: " + std::to_string(spread_valid) + "/8 valid" +
-                  " (W7: the star enumeration is a separate run, its counts below; proofs/README.md)";
+                  " (W7: the star enumeration is a separate run, its counts below; proofs/README.md)" +
+                  (corner_ok ? "; W12: the odd corner pair passes" : "; W12: the odd corner pair FAILS");
     std::ostringstream report;
     report << "  elements over the visible domain:";
     for (const auto& [name, n] : r.elements) report << ' ' << name << ' ' << n;
@@ -114,7 +124,6 @@ CheckOutcome check_compositional_weak() {
     if (!spread_failure.empty()) report << "  FAIL spread grid, " << spread_failure << '\n';
     // W7, relevant bits only: what each context bit changes at each point of a leaf, and
     // what the leaves at a vertex read jointly, per leaf configuration.
-    const WeakStarInfluence influence = weak_star_influence(WeakRule(), library);
     report << "  W7 influence: " << influence.positions.size() << " vertex positions in a leaf, "
            << influence.distinct_pieces << " distinct pieces, relevant bits per position:";
     for (const auto& [k, n] : influence.relevant_histogram) report << ' ' << k << ':' << n;
@@ -128,6 +137,10 @@ CheckOutcome check_compositional_weak() {
                << " (vertex, leaf configuration) pairs, at most " << w.max_free << " free statuses read, "
                << w.max_shared << " shared; joint assignments " << w.joint << '\n';
     }
+    report << "  W12 g=111, v = g, 8 leaves of level m (the pair the star search does not finish): "
+           << (corner_ok ? "passes" : "FAILS") << " leaf by leaf (" << corner.corner_pieces << " pieces) and quadrant by quadrant ("
+           << corner.corner_quadrant_tuples << " tuples), one star whole\n";
+    for (const auto& f : corner.failures) report << "  FAIL W12: " << f << '\n';
     out.details = {{"reach_octants", r.reach_octants}, {"lemma_contexts", r.lemma_contexts},
                    {"lemma_plain", r.lemma_plain}, {"visible_contexts", r.visible_contexts},
                    {"placed", r.placed}, {"plain", r.plain}, {"refused", r.refused},
@@ -135,7 +148,8 @@ CheckOutcome check_compositional_weak() {
                    {"mr_contexts", r.mr_contexts}, {"spread_levels", at}, {"spread_grids_valid", spread_valid},
                    {"windows", windows}, {"star_reads", stars},
                    {"star_positions", influence.positions.size()}, {"star_pieces", influence.distinct_pieces},
-                   {"star_max_relevant", influence.max_relevant()}};
+                   {"star_max_relevant", influence.max_relevant()}, {"odd_corner_pair_passed", corner_ok},
+                   {"odd_corner_pair_pieces", corner.corner_pieces}, {"odd_corner_pair_quadrant_tuples", corner.corner_quadrant_tuples}};
     out.report = report.str();
     return out;
 }

@@ -121,8 +121,9 @@ TEST(WeakStars, DISABLED_EveryStarAtEightParitiesIsValid) {
         const WeakStarCheck r = run_weak_stars(WeakRule(), library(), weak_influence(), o);
         for (const auto& f : r.failures) ADD_FAILURE() << f;
         std::printf("parity %d%d%d: %ld pairs, %ld search nodes, %ld stars (%ld passed, %ld failed), %ld without a cell at v, "
-                    "%.2f s CPU\n",
+                    "%ld corner pairs passed by W12 (%ld pieces, %ld quadrant tuples), %.2f s CPU\n",
                     t & 1, (t >> 1) & 1, (t >> 2) & 1, r.pairs, r.search_nodes, r.stars, r.passed, r.failed, r.empty,
+                    r.corner_pairs, r.corner_pieces, r.corner_quadrant_tuples,
                     static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
         std::fflush(stdout);
         EXPECT_TRUE(r.all_passed());
@@ -180,10 +181,73 @@ TEST(WeakStars, EveryStarAtAnOddPointButOneIsValid) {
     at_g.parities = 0x80;
     at_g.vertex = [](const LatticePoint& v) { return v == LatticePoint{}; };
     at_g.search_limit = 20000;
+    at_g.corner_pairs = CornerPairs::Never;
     const WeakStarCheck g = run_weak_stars(WeakRule(), library(), weak_influence(), at_g);
     EXPECT_EQ(g.pairs, 1);
     EXPECT_EQ(g.failed, 1);  // the search gives up there, and says so: never a pass
     EXPECT_FALSE(g.all_passed());
+}
+
+// The one pair the search gives up on is a corner pair, and passes W12's check: every
+// piece of each of its 8 leaves (P1), every pair of pieces across each of its 12 quadrants
+// (P2), one whole star (P3).
+TEST(WeakStars, TheOddPairPassesLeafByLeafAndQuadrantByQuadrant) {
+    WeakStarOptions at_g;
+    at_g.parities = 0x80;
+    at_g.vertex = [](const LatticePoint& v) { return v == LatticePoint{}; };
+    at_g.search_limit = 20000;
+    const WeakStarCheck g = run_weak_stars(WeakRule(), library(), weak_influence(), at_g);
+    for (const auto& f : g.failures) ADD_FAILURE() << f;
+    EXPECT_EQ(g.pairs, 1);
+    EXPECT_EQ(g.corner_pairs, 1);
+    EXPECT_EQ(g.failed, 0);
+    EXPECT_TRUE(g.all_passed());
+    std::printf("the odd pair: %ld pieces, %ld quadrant tuples, %ld search nodes\n", g.corner_pieces, g.corner_quadrant_tuples,
+                g.search_nodes);
+}
+
+// W12 gives the star-by-star verdict at every corner pair where both run (v = g at parities
+// 000, 100 and 110: all leaves there have v as a corner), for the weak rule and for the two
+// wrong ones, which fail at some of them.
+TEST(WeakStars, CornerPairsGiveTheStarByStarVerdicts) {
+    using Verdicts = std::map<std::pair<LatticePoint, std::array<int, 8>>, bool>;
+    const auto verdicts = [](const TransitionRule& rule, const WeakStarInfluence& influence, unsigned parity, CornerPairs how) {
+        Verdicts out;
+        std::mutex lock;
+        WeakStarOptions o;
+        o.parities = parity;
+        o.vertex = [](const LatticePoint& v) { return v == LatticePoint{}; };
+        o.corner_pairs = how;
+        o.verdicts = [&](const LatticePoint& v, const std::array<int, 8>& levels, bool passed) {
+            const std::lock_guard guard(lock);
+            out[{v, levels}] = passed;
+        };
+        const WeakStarCheck r = run_weak_stars(rule, library(), influence, o);
+        EXPECT_EQ(static_cast<long>(out.size()), r.pairs);
+        if (how == CornerPairs::Never) EXPECT_EQ(r.corner_pairs, 0);
+        return out;
+    };
+    const test::WeakMutant misoriented(false), missing(true);
+    const WeakStarInfluence misoriented_influence = weak_star_influence(misoriented, library()),
+                            missing_influence = weak_star_influence(missing, library());
+    const std::vector<std::pair<const TransitionRule*, const WeakStarInfluence*>> rules{
+        {nullptr, &weak_influence()}, {&misoriented, &misoriented_influence}, {&missing, &missing_influence}};
+    const WeakRule weak;
+    for (std::size_t k = 0; k < rules.size(); ++k) {
+        const TransitionRule& rule = rules[k].first ? *rules[k].first : weak;
+        long failing = 0, pairs = 0;
+        for (const unsigned parity : {1U, 2U, 8U}) {
+            const Verdicts by_stars = verdicts(rule, *rules[k].second, parity, CornerPairs::Never);
+            const Verdicts by_corner = verdicts(rule, *rules[k].second, parity, CornerPairs::Always);
+            EXPECT_EQ(by_corner, by_stars) << "rule " << k << " parity bit " << parity;
+            for (const auto& [pair, passed] : by_stars) failing += passed ? 0 : 1;
+            pairs += static_cast<long>(by_stars.size());
+        }
+        std::printf("rule %zu: %ld corner pairs, %ld failing\n", k, pairs, failing);
+        EXPECT_GT(pairs, 0);
+        if (k == 0) EXPECT_EQ(failing, 0);
+        else EXPECT_GT(failing, 0);
+    }
 }
 
 // A rule with E-MR mis-oriented, or without VC3-MR, fails at parity 000 (the reference

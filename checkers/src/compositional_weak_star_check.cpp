@@ -22,7 +22,56 @@ bool holds(const std::vector<std::pair<int, int>>& implies, const auto& value) {
     return std::all_of(implies.begin(), implies.end(), [&](const auto& i) { return !value(i.first) || value(i.second); });
 }
 
+// The cells of t (placed at origin + scale * p) that have v as a vertex, translated so that
+// v is the origin.
+void emit_cells_at(ComplexBuilder& builder, const detail::ElementTemplate& t, const LatticePoint& origin, std::int64_t scale,
+                   const LatticePoint& v) {
+    std::vector<VertexHandle> loop;
+    std::vector<HalfFaceHandle> halffaces;
+    const auto world = [&](std::uint32_t n) { return origin + t.points[n] * scale - v; };
+    for (std::size_t c = 0; c < t.n_cells(); ++c) {
+        bool at_v = false;
+        for (std::uint32_t q = t.face_offsets[t.cell_offsets[c]]; q < t.face_offsets[t.cell_offsets[c + 1]] && !at_v; ++q)
+            at_v = world(t.face_points[q]) == LatticePoint{};
+        if (!at_v) continue;
+        halffaces.clear();
+        for (std::uint32_t f = t.cell_offsets[c]; f < t.cell_offsets[c + 1]; ++f) {
+            loop.clear();
+            for (std::uint32_t q = t.face_offsets[f]; q < t.face_offsets[f + 1]; ++q) loop.push_back(builder.add_vertex(world(t.face_points[q])));
+            halffaces.push_back(builder.add_face(loop));
+        }
+        builder.add_cell(halffaces);
+    }
+}
+
 }  // namespace
+
+ConfigurationComplex build_star(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
+                                const Pair& p, const LatticePoint& v_world, const std::vector<int>& contexts) {
+    ConfigurationComplex out;
+    out.unit = inf.unit;
+    ComplexBuilder builder;
+    for (std::size_t n = 0; n < p.leaves.size(); ++n) {
+        const LeafBits& b = p.leaves[n];
+        const std::int64_t S = cell_size(inf.unit, b.at.leaf.level);
+        const LatticePoint corner = LatticePoint{b.at.leaf.cell[0], b.at.leaf.cell[1], b.at.leaf.cell[2]} * S;
+        if (b.at.leaf.level == kFinest) {
+            emit_cells_at(builder, cache.hex(S), corner, 1, v_world);
+            continue;
+        }
+        const LeafContext ctx = set_visible_context(b.at.frame, contexts[n], inf.octant_bits);
+        const std::optional<Placement> placement = rule.place(ctx);
+        if (!placement) {
+            emit_cells_at(builder, cache.hex(S), corner, 1, v_world);
+            continue;
+        }
+        detail::check_placement_symmetry(*placement);
+        const auto& t = cache.placed(cache.element_index(placement->element), world_symmetry(ctx, *placement));
+        emit_cells_at(builder, t, ctx.application_point * S, S / inf.unit, v_world);
+    }
+    out.complex = std::move(builder).build();
+    return out;
+}
 
 Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_t>& index, const LatticePoint& v,
            const LatticePoint& g, const std::array<Leaf, 8>& leaves) {
@@ -120,56 +169,6 @@ namespace {
 
 using namespace weak_stars;
 
-// The cells of t (placed at origin + scale * p) that have v as a vertex, translated so that
-// v is the origin.
-void emit_cells_at(ComplexBuilder& builder, const detail::ElementTemplate& t, const LatticePoint& origin, std::int64_t scale,
-                   const LatticePoint& v) {
-    std::vector<VertexHandle> loop;
-    std::vector<HalfFaceHandle> halffaces;
-    const auto world = [&](std::uint32_t n) { return origin + t.points[n] * scale - v; };
-    for (std::size_t c = 0; c < t.n_cells(); ++c) {
-        bool at_v = false;
-        for (std::uint32_t q = t.face_offsets[t.cell_offsets[c]]; q < t.face_offsets[t.cell_offsets[c + 1]] && !at_v; ++q)
-            at_v = world(t.face_points[q]) == LatticePoint{};
-        if (!at_v) continue;
-        halffaces.clear();
-        for (std::uint32_t f = t.cell_offsets[c]; f < t.cell_offsets[c + 1]; ++f) {
-            loop.clear();
-            for (std::uint32_t q = t.face_offsets[f]; q < t.face_offsets[f + 1]; ++q) loop.push_back(builder.add_vertex(world(t.face_points[q])));
-            halffaces.push_back(builder.add_face(loop));
-        }
-        builder.add_cell(halffaces);
-    }
-}
-
-// The star: the cells at v of the leaves' elements (or plain cubes), v at the origin.
-ConfigurationComplex build_star(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
-                                const Pair& p, const LatticePoint& v_world, const std::vector<int>& contexts) {
-    ConfigurationComplex out;
-    out.unit = inf.unit;
-    ComplexBuilder builder;
-    for (std::size_t n = 0; n < p.leaves.size(); ++n) {
-        const LeafBits& b = p.leaves[n];
-        const std::int64_t S = cell_size(inf.unit, b.at.leaf.level);
-        const LatticePoint corner = LatticePoint{b.at.leaf.cell[0], b.at.leaf.cell[1], b.at.leaf.cell[2]} * S;
-        if (b.at.leaf.level == kFinest) {
-            emit_cells_at(builder, cache.hex(S), corner, 1, v_world);
-            continue;
-        }
-        const LeafContext ctx = set_visible_context(b.at.frame, contexts[n], inf.octant_bits);
-        const std::optional<Placement> placement = rule.place(ctx);
-        if (!placement) {
-            emit_cells_at(builder, cache.hex(S), corner, 1, v_world);
-            continue;
-        }
-        detail::check_placement_symmetry(*placement);
-        const auto& t = cache.placed(cache.element_index(placement->element), world_symmetry(ctx, *placement));
-        emit_cells_at(builder, t, ctx.application_point * S, S / inf.unit, v_world);
-    }
-    out.complex = std::move(builder).build();
-    return out;
-}
-
 std::string describe(const std::array<int, 3>& parity, const Pair& p, const std::vector<int>& contexts, const std::string& why) {
     std::ostringstream os;
     os << "g=(" << parity[0] << ',' << parity[1] << ',' << parity[2] << ") v-g=" << p.v << " leaves";
@@ -201,7 +200,7 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
     std::mutex tally;
     std::atomic<long> failed{0};
     std::optional<PieceCubes> cubes;
-    if (!options.count_only && !options.reference_product) cubes = piece_cubes(inf);
+    if (!options.count_only) cubes = piece_cubes(inf);
     for (int t = 0; t < 8; ++t) {
         if (!((options.parities >> t) & 1U)) continue;
         const std::array<int, 3> parity{t & 1, (t >> 1) & 1, (t >> 2) & 1};
@@ -215,21 +214,44 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
             for (std::size_t i = range.begin(); i != range.end(); ++i) {
                 if (stop_after > 0 && failed.load() >= stop_after) break;
                 const LatticePoint& v = vertices[i];
-                Configurations(v, inf.unit).each([&](const std::array<int, 8>&, const std::array<Leaf, 8>& leaves) {
+                Configurations(v, inf.unit).each([&](const std::array<int, 8>& levels, const std::array<Leaf, 8>& leaves) {
                     ++local.pairs;
                     const Pair p = split(inf, index, v, g, leaves);
                     local.joint_bound += std::ldexp(1.0, p.n_shared);
                     local.max_shared = std::max(local.max_shared, p.n_shared);
                     if (options.count_only) return;
+                    const long failed_before = local.failed;
+                    const auto verdict = [&] {
+                        if (options.verdicts) options.verdicts(v - g, levels, local.failed == failed_before);
+                    };
+                    const auto fail = [&](const std::vector<int>& contexts, const std::string& why) {
+                        ++local.failed;
+                        ++failed;
+                        if (local.failures.size() < 10) local.failures.push_back(describe(parity, p, contexts, why));
+                    };
+                    const bool corner = options.corner_pairs != CornerPairs::Never && is_corner_pair(inf, p, v);
+                    const auto by_corner = [&] {
+                        try {
+                            const CornerCheck c = check_corner_pair(inf, rule, cache, *cubes, p, v, options.search_limit);
+                            local.search_nodes += c.search_nodes;
+                            local.corner_pieces += c.pieces;
+                            local.corner_quadrant_tuples += c.quadrant_tuples;
+                            if (c.passed) ++local.corner_pairs;
+                            else fail(std::vector<int>(p.leaves.size(), -1), "corner pair (W12): " + c.defect);
+                        } catch (const std::exception& e) {  // the search gave up, or the rule threw
+                            fail(std::vector<int>(p.leaves.size(), -1), std::string("corner pair (W12): ") + e.what());
+                        }
+                        verdict();
+                    };
+                    if (corner && options.corner_pairs == CornerPairs::Always) return by_corner();
                     Stars stars;
                     try {
                         stars = options.reference_product ? stars_by_product(inf, p, local.assignments)
                                                           : stars_by_search(*cubes, p, local.search_nodes, options.search_limit);
                     } catch (const SearchTooLarge& e) {
-                        ++local.failed;
-                        ++failed;
-                        if (local.failures.size() < 10) local.failures.push_back(describe(parity, p, std::vector<int>(p.leaves.size(), -1), e.what()));
-                        return;
+                        if (corner) return by_corner();
+                        fail(std::vector<int>(p.leaves.size(), -1), e.what());
+                        return verdict();
                     }
                     for (const auto& [pieces, contexts] : stars) {
                         if (options.stars) options.stars(v - g, pieces);
@@ -241,20 +263,19 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
                         if (!options.build_stars) continue;
                         const ConfigurationReport r =
                             detail::check(0, [&] { return build_star(inf, rule, cache, p, v, contexts); }, at_v, away_from_v);
-                        if (r.ok() && r.checked_vertices == 1) {
-                            ++local.passed;
-                        } else {
-                            ++local.failed;
-                            ++failed;
-                            if (local.failures.size() < 10) local.failures.push_back(describe(parity, p, contexts, r.summary()));
-                        }
+                        if (r.ok() && r.checked_vertices == 1) ++local.passed;
+                        else fail(contexts, r.summary());
                     }
+                    verdict();
                 });
             }
             const std::lock_guard lock(tally);
             result.pairs += local.pairs;
             result.assignments += local.assignments;
             result.search_nodes += local.search_nodes;
+            result.corner_pairs += local.corner_pairs;
+            result.corner_pieces += local.corner_pieces;
+            result.corner_quadrant_tuples += local.corner_quadrant_tuples;
             result.stars += local.stars;
             result.empty += local.empty;
             result.joint_bound += local.joint_bound;

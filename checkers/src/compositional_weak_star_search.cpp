@@ -125,8 +125,8 @@ int branch_digit(const PieceCubes::Position& table, int idx, const std::vector<i
 // so it is skipped.
 class Search {
 public:
-    Search(const PieceCubes& cubes, const Pair& p, long limit)
-        : cubes_(cubes), vars_(variables_of(p)), limit_(limit) {
+    Search(const PieceCubes& cubes, const Pair& p, long limit, std::size_t max_stars)
+        : cubes_(cubes), vars_(variables_of(p)), limit_(limit), max_stars_(max_stars) {
         if (vars_.leaves.size() > 8) throw std::invalid_argument("weak star search: more than 8 leaves at one vertex");
         seen_.resize(vars_.leaves.size());
         pieces_.resize(vars_.leaves.size());
@@ -161,6 +161,7 @@ private:
 
     // Leaves n.. under a; prefix packs the pieces of leaves 0..n-1 (9 bits each).
     void visit(std::size_t n, const Partial& a, std::uint64_t prefix) {
+        if (full()) return;
         if (n == vars_.leaves.size()) {
             out_.emplace(pieces_, contexts_);
             return;
@@ -173,6 +174,7 @@ private:
     // Leaf n's piece under a: constant (go on with leaf n + 1), or branch on the status its
     // piece table names.
     void decide(std::size_t n, const Partial& a, std::uint64_t prefix) {
+        if (full()) return;
         const auto& leaf = vars_.leaves[n];
         if (leaf.position < 0) return fix(n, a, prefix, leaf.constant, 0);
         const auto& table = cubes_.positions[static_cast<std::size_t>(leaf.position)];
@@ -210,9 +212,12 @@ private:
         visit(n + 1, a, prefix << 9 | static_cast<std::uint64_t>(piece + 3));
     }
 
+    bool full() const { return max_stars_ > 0 && out_.size() >= max_stars_; }
+
     const PieceCubes& cubes_;
     const Variables vars_;
     const long limit_;
+    const std::size_t max_stars_;
     long nodes_ = 0;
     std::vector<std::unordered_set<Key, KeyHash>> seen_;
     std::vector<int> pieces_, contexts_;
@@ -228,8 +233,8 @@ PieceCubes piece_cubes(const WeakStarInfluence& inf) {
     return out;
 }
 
-Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit) {
-    return Search(cubes, p, limit).run(nodes);
+Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit, std::size_t max_stars) {
+    return Search(cubes, p, limit, max_stars).run(nodes);
 }
 
 }  // namespace dualhex::weak_stars

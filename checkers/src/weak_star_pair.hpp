@@ -5,9 +5,12 @@
 // backtracking search over partial assignments, proofs/README.md W9 (vi)-(vii)).
 #include <cstdint>
 #include <map>
+#include <optional>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
+#include "dualhex/checkers/configuration_report.hpp"
 #include "weak_star_leaves.hpp"
 
 namespace dualhex::weak_stars {
@@ -85,6 +88,40 @@ PieceCubes piece_cubes(const WeakStarInfluence& inf);
 struct SearchTooLarge : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
-Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit);
+/// `max_stars` > 0: stop once that many stars are found.
+Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit, std::size_t max_stars = 0);
+
+/// The star: the cells at v of the leaves' elements (or plain cubes), v at the origin;
+/// contexts[n] is leaf n's visible context.
+ConfigurationComplex build_star(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
+                                const Pair& p, const LatticePoint& v_world, const std::vector<int>& contexts);
+
+// W12 (compositional_weak_star_corner.cpp): a corner pair (8 leaves, each with v as a
+// corner of its cube) checked leaf by leaf and quadrant by quadrant.
+
+/// The pair with only the leaves `keep` (in that order), every status, shared index and
+/// implication kept: its search finds the projections of the pair's stars onto them.
+Pair restricted(const Pair& p, const std::vector<std::size_t>& keep);
+/// True iff p has 8 leaves, each with v (world) as a corner of its cube.
+bool is_corner_pair(const WeakStarInfluence& inf, const Pair& p, const LatticePoint& v_world);
+/// P1 on one leaf's piece built alone (v at the origin, `sign` the leaf's octant): the
+/// first reason it fails, or nothing.
+std::optional<std::string> corner_piece_defect(const CellComplex& cx, const std::array<int, 3>& sign);
+/// P2 on two leaves across a quadrant, built together.
+std::optional<std::string> corner_quadrant_defect(const CellComplex& cx);
+
+struct CornerCheck {
+    long pieces = 0, quadrant_tuples = 0, search_nodes = 0;
+    bool passed = false;
+    std::string defect;  ///< why not, if not passed
+    CornerCheck& fail(std::string why) {
+        defect = std::move(why);
+        return *this;
+    }
+};
+/// P1 on every piece of every leaf, P2 on every tuple of every quadrant, P3 on one star
+/// (searches with `limit` nodes each; SearchTooLarge propagates).
+CornerCheck check_corner_pair(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
+                              const PieceCubes& cubes, const Pair& p, const LatticePoint& v_world, long limit);
 
 }  // namespace dualhex::weak_stars

@@ -105,8 +105,20 @@ struct WeakStarCheck {
     /// joint loop's size before the implications prune it; and the largest exponent.
     double joint_bound = 0;
     int max_shared = 0;
+    /// Corner pairs (8 leaves, each with v as a corner) passed by W12's check instead of
+    /// star by star (WeakStarOptions::corner_pairs); the pieces (P1) and quadrant tuples
+    /// (P2) it checked. A corner pair that fails counts in `failed`.
+    long corner_pairs = 0, corner_pieces = 0, corner_quadrant_tuples = 0;
     std::vector<std::string> failures;  ///< the first few, described
-    [[nodiscard]] bool all_passed() const { return stars > 0 && failed == 0 && passed == stars; }
+    [[nodiscard]] bool all_passed() const { return (stars > 0 || corner_pairs > 0) && failed == 0 && passed == stars; }
+};
+
+/// Where a corner pair (8 leaves, each with v as a corner of its cube) is checked leaf by
+/// leaf and quadrant by quadrant (proofs/README.md W12) instead of star by star.
+enum class CornerPairs {
+    WhenSearchGivesUp,  ///< only where the star search exceeds search_limit
+    Always,             ///< every corner pair
+    Never,              ///< none: a search that gives up is a failure
 };
 
 struct WeakStarOptions {
@@ -125,6 +137,10 @@ struct WeakStarOptions {
     /// at v) before it is checked. Called from several threads at once.
     std::function<void(const LatticePoint&, const std::vector<int>&)> stars;
     bool build_stars = true;  ///< false: only enumerate and count them (stars, empty; none checked)
+    CornerPairs corner_pairs = CornerPairs::WhenSearchGivesUp;
+    /// Optional: told each pair's verdict (v relative to g, level - m per sign octant, true
+    /// iff nothing failed at it) once it is checked. Called from several threads at once.
+    std::function<void(const LatticePoint&, const std::array<int, 8>&, bool)> verdicts;
 };
 
 /// Runs it (oneTBB over the candidate vertices).
