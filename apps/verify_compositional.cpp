@@ -89,7 +89,7 @@ CheckOutcome check_compositional_weak() {
         else if (spread_failure.empty()) spread_failure = "corner " + std::to_string(corner) + ": " + v.summary();
     }
     const WeakStarInfluence influence = weak_star_influence(WeakRule(), library);
-    // W12: the one pair the star search cannot finish (parity 111, v = g, the 8 leaves of
+    // W11: the one pair the star search cannot finish (parity 111, v = g, the 8 leaves of
     // level m) is a corner pair, checked leaf by leaf and quadrant by quadrant.
     WeakStarOptions odd;
     odd.parities = 0x80;
@@ -107,7 +107,7 @@ CheckOutcome check_compositional_weak() {
                   "; levels " + std::to_string(at.front()) + ".." + std::to_string(at.back()) +
                   " at one point, 8 orientations installed: " + std::to_string(spread_valid) + "/8 valid" +
                   " (W7: the star enumeration is a separate run, its counts below; proofs/README.md)" +
-                  (corner_ok ? "; W12: the odd corner pair passes" : "; W12: the odd corner pair FAILS");
+                  (corner_ok ? "; W11: the odd corner pair passes" : "; W11: the odd corner pair FAILS");
     std::ostringstream report;
     report << "  elements over the visible domain:";
     for (const auto& [name, n] : r.elements) report << ' ' << name << ' ' << n;
@@ -137,10 +137,10 @@ CheckOutcome check_compositional_weak() {
                << " (vertex, leaf configuration) pairs, at most " << w.max_free << " free statuses read, "
                << w.max_shared << " shared; joint assignments " << w.joint << '\n';
     }
-    report << "  W12 g=111, v = g, 8 leaves of level m (the pair the star search does not finish): "
+    report << "  W11 g=111, v = g, 8 leaves of level m (the pair the star search does not finish): "
            << (corner_ok ? "passes" : "FAILS") << " leaf by leaf (" << corner.corner_pieces << " pieces) and quadrant by quadrant ("
            << corner.corner_quadrant_tuples << " tuples), one star whole\n";
-    for (const auto& f : corner.failures) report << "  FAIL W12: " << f << '\n';
+    for (const auto& f : corner.failures) report << "  FAIL W11: " << f << '\n';
     out.details = {{"reach_octants", r.reach_octants}, {"lemma_contexts", r.lemma_contexts},
                    {"lemma_plain", r.lemma_plain}, {"visible_contexts", r.visible_contexts},
                    {"placed", r.placed}, {"plain", r.plain}, {"refused", r.refused},

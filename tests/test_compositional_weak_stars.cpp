@@ -121,7 +121,7 @@ TEST(WeakStars, DISABLED_EveryStarAtEightParitiesIsValid) {
         const WeakStarCheck r = run_weak_stars(WeakRule(), library(), weak_influence(), o);
         for (const auto& f : r.failures) ADD_FAILURE() << f;
         std::printf("parity %d%d%d: %ld pairs, %ld search nodes, %ld stars (%ld passed, %ld failed), %ld without a cell at v, "
-                    "%ld corner pairs passed by W12 (%ld pieces, %ld quadrant tuples), %.2f s CPU\n",
+                    "%ld corner pairs passed by W11 (%ld pieces, %ld quadrant tuples), %.2f s CPU\n",
                     t & 1, (t >> 1) & 1, (t >> 2) & 1, r.pairs, r.search_nodes, r.stars, r.passed, r.failed, r.empty,
                     r.corner_pairs, r.corner_pieces, r.corner_quadrant_tuples,
                     static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
@@ -188,7 +188,7 @@ TEST(WeakStars, EveryStarAtAnOddPointButOneIsValid) {
     EXPECT_FALSE(g.all_passed());
 }
 
-// The one pair the search gives up on is a corner pair, and passes W12's check: every
+// The one pair the search gives up on is a corner pair, and passes W11's check: every
 // piece of each of its 8 leaves (P1), every pair of pieces across each of its 12 quadrants
 // (P2), one whole star (P3).
 TEST(WeakStars, TheOddPairPassesLeafByLeafAndQuadrantByQuadrant) {
@@ -206,7 +206,7 @@ TEST(WeakStars, TheOddPairPassesLeafByLeafAndQuadrantByQuadrant) {
                 g.search_nodes);
 }
 
-// W12 gives the star-by-star verdict at every corner pair where both run (v = g at parities
+// W11 gives the star-by-star verdict at every corner pair where both run (v = g at parities
 // 000, 100 and 110: all leaves there have v as a corner), for the weak rule and for the two
 // wrong ones, which fail at some of them.
 TEST(WeakStars, CornerPairsGiveTheStarByStarVerdicts) {

@@ -1,4 +1,4 @@
-// W12's two local checks (checkers/src/weak_star_pair.hpp) on hand-made complexes: a cube
+// W11's two local checks (checkers/src/weak_star_pair.hpp) on hand-made complexes: a cube
 // at v passes as a piece, and two cubes across a quadrant pass as a pair; each wrong
 // piece or pair below is refused, with a reason.
 #include <gtest/gtest.h>

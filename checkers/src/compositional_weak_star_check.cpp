@@ -237,9 +237,9 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
                             local.corner_pieces += c.pieces;
                             local.corner_quadrant_tuples += c.quadrant_tuples;
                             if (c.passed) ++local.corner_pairs;
-                            else fail(std::vector<int>(p.leaves.size(), -1), "corner pair (W12): " + c.defect);
+                            else fail(std::vector<int>(p.leaves.size(), -1), "corner pair (W11): " + c.defect);
                         } catch (const std::exception& e) {  // the search gave up, or the rule threw
-                            fail(std::vector<int>(p.leaves.size(), -1), std::string("corner pair (W12): ") + e.what());
+                            fail(std::vector<int>(p.leaves.size(), -1), std::string("corner pair (W11): ") + e.what());
                         }
                         verdict();
                     };

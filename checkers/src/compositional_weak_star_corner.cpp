@@ -1,4 +1,4 @@
-// W12 of proofs/README.md: a (vertex, configuration) pair whose 8 leaves all have v as a
+// W11 of proofs/README.md: a (vertex, configuration) pair whose 8 leaves all have v as a
 // corner of their cube (a *corner pair*) checked leaf by leaf and quadrant by quadrant
 // instead of star by star. The stars of such a pair are the products of the leaves'
 // pieces, and at parity 111 they run into the millions; but every check the validator

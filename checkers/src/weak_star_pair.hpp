@@ -96,7 +96,7 @@ Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long 
 ConfigurationComplex build_star(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
                                 const Pair& p, const LatticePoint& v_world, const std::vector<int>& contexts);
 
-// W12 (compositional_weak_star_corner.cpp): a corner pair (8 leaves, each with v as a
+// W11 (compositional_weak_star_corner.cpp): a corner pair (8 leaves, each with v as a
 // corner of its cube) checked leaf by leaf and quadrant by quadrant.
 
 /// The pair with only the leaves `keep` (in that order), every status, shared index and

@@ -105,7 +105,7 @@ struct WeakStarCheck {
     /// joint loop's size before the implications prune it; and the largest exponent.
     double joint_bound = 0;
     int max_shared = 0;
-    /// Corner pairs (8 leaves, each with v as a corner) passed by W12's check instead of
+    /// Corner pairs (8 leaves, each with v as a corner) passed by W11's check instead of
     /// star by star (WeakStarOptions::corner_pairs); the pieces (P1) and quadrant tuples
     /// (P2) it checked. A corner pair that fails counts in `failed`.
     long corner_pairs = 0, corner_pieces = 0, corner_quadrant_tuples = 0;
@@ -114,7 +114,7 @@ struct WeakStarCheck {
 };
 
 /// Where a corner pair (8 leaves, each with v as a corner of its cube) is checked leaf by
-/// leaf and quadrant by quadrant (proofs/README.md W12) instead of star by star.
+/// leaf and quadrant by quadrant (proofs/README.md W11) instead of star by star.
 enum class CornerPairs {
     WhenSearchGivesUp,  ///< only where the star search exceeds search_limit
     Always,             ///< every corner pair
