@@ -184,20 +184,23 @@ WeakRootStarCheck run_weak_root_stars(const TransitionRule& rule, const ElementL
                     return fail({}, e.what());  // counted as a failure, never a pass
                 }
                 for (const auto& [pieces, contexts] : stars) {
-                    if (options.stars) {
-                        WeakRootStar star{type.sides, type.parity, v - g, levels, {}, pieces};
+                    const auto tell = [&](const CellComplex* complex) {
+                        if (!options.stars) return;
+                        WeakRootStar star{type.sides, type.parity, v - g, levels, {}, pieces, complex};
                         for (int s = 0; s < 8; ++s)
                             if (!mirror && !inside_octant(type.sides, s)) star.levels[static_cast<std::size_t>(s)] = -1;
                         for (const LeafBits& b : p.leaves) star.leaves.push_back({b.at.leaf.level, b.at.leaf.cell});
                         options.stars(star);
-                    }
+                    };
                     if (std::all_of(pieces.begin(), pieces.end(), [](int x) { return x == -1; })) {
                         ++local.empty[k];
+                        tell(nullptr);
                         continue;
                     }
                     ++local.stars[k];
                     try {
                         const ConfigurationComplex star = build_star(inf, rule, cache, p, v, contexts);
+                        tell(&star.complex);
                         if (const auto why = boundary_vertex_defect(star.complex, type.sides)) fail(contexts, *why);
                         else ++local.passed[k];
                     } catch (const std::exception& e) {  // the rule refused or threw

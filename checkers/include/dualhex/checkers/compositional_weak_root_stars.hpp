@@ -37,8 +37,9 @@ struct WeakRootStarCheck {
 };
 
 /// A star as enumerated: the type, v (relative to g), level - m per sign octant (outside
-/// octants: their mirror's under Mirror, -1 under Coarse), and the inside leaves (cell,
-/// level) with their pieces (-1: no cell at v).
+/// octants: their mirror's under Mirror, -1 under Coarse), the inside leaves (level, cell)
+/// with their pieces (-1: no cell at v), and the star as built (v at the origin; null if no
+/// leaf has a cell at v or the rule threw).
 struct WeakRootStar {
     RootSides sides{};
     std::array<int, 3> parity{};
@@ -46,6 +47,7 @@ struct WeakRootStar {
     std::array<int, 8> levels{};
     std::vector<std::pair<int, std::array<std::int64_t, 3>>> leaves;
     std::vector<int> pieces;
+    const CellComplex* complex = nullptr;
 };
 
 struct WeakRootStarOptions {
@@ -55,7 +57,7 @@ struct WeakRootStarOptions {
     /// A wrong policy (tests): `Coarse`, but a cell outside the root reads fine to the leaves
     /// (level - m, cell index in level cells) this accepts, so readers can disagree about it.
     std::function<bool(int, const std::array<std::int64_t, 3>&)> outside_fine_for;
-    /// Optional: told every distinct star before it is checked (from several threads).
+    /// Optional: told every distinct star, built, before it is checked (from several threads).
     std::function<void(const WeakRootStar&)> stars;
 };
 
