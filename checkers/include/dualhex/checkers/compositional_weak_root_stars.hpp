@@ -67,3 +67,37 @@ struct WeakRootStarOptions {
                                                     const WeakRootStarOptions& options = {});
 
 }  // namespace dualhex
+
+namespace dualhex {
+
+/// `Coarse` near the root surface (proofs/README.md W13 (f)): the vertices v whose leaves'
+/// enumeration names a cell beyond a root plane not through v. Per (v, configuration) and
+/// per choice of root planes through v (none: v inside the root; else as in
+/// run_weak_root_stars), each further root plane (an even level-m coordinate within
+/// `reach` level-m units of g, v strictly inside it) that makes some named cell outside;
+/// then every combination of those. Planes that name no outside cell change nothing (the
+/// run is then the one without them). Checked: the interior checks of W9 (vi) when no plane
+/// passes through v, B1-B5 otherwise.
+struct WeakNearRootStarCheck {
+    std::string rule;
+    std::array<long, 4> combinations{};  ///< by planes through v (0..3): plane sets run
+    long unchanged = 0;  ///< (pair, plane) tried that named no outside cell (skipped)
+    long stars = 0, empty = 0, passed = 0, failed = 0, search_nodes = 0, corner_pairs = 0;
+    long hits_at_reach = 0;  ///< planes at the end of the reach that named an outside cell (must be 0)
+    std::vector<std::string> failures;
+    [[nodiscard]] bool all_passed() const { return stars > 0 && failed == 0 && passed == stars && hits_at_reach == 0; }
+};
+
+struct WeakNearRootStarOptions {
+    unsigned parities = 0xFF;
+    int max_planes = 3;  ///< at most this many root planes not through v in one combination
+    int reach = 8;  ///< level-m units either side of g where a plane is tried
+    long search_limit = 5'000'000;
+    long stop_after = 0;
+};
+
+[[nodiscard]] WeakNearRootStarCheck run_weak_near_root_stars(const TransitionRule& rule, const ElementLibrary& library,
+                                                             const WeakStarInfluence& influence,
+                                                             const WeakNearRootStarOptions& options = {});
+
+}  // namespace dualhex
