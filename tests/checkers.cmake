@@ -7,5 +7,6 @@ dualhex_add_test(test_class_check SOURCES test_class_check.cpp DEPS dualhex::che
 dualhex_add_test(test_congruence_check SOURCES test_congruence_check.cpp DEPS dualhex::checkers)
 dualhex_add_test(test_root_boundary_grids SOURCES test_root_boundary_grids.cpp DEPS dualhex::checkers)
 dualhex_add_test(test_compositional_weak_stars SOURCES test_compositional_weak_stars.cpp DEPS dualhex::checkers)
+dualhex_add_test(test_weak_root_stars SOURCES test_weak_root_stars.cpp DEPS dualhex::checkers dualhex::install)
 dualhex_add_test(test_weak_star_corner SOURCES test_weak_star_corner.cpp DEPS dualhex::checkers)
 target_include_directories(test_weak_star_corner PRIVATE ${PROJECT_SOURCE_DIR}/checkers/src)

@@ -1,7 +1,10 @@
 // The boundary conditions at root-boundary vertices (compositional_boundary.hpp,
 // check_boundary_vertices; proofs/README.md "Root boundary", B1-B5). Everything is exact:
 // lattice positions, combinatorial links, the clipped dual with rational corners.
+#include <algorithm>
+#include <cstdlib>
 #include <map>
+#include <optional>
 #include <numeric>
 #include <sstream>
 
@@ -158,45 +161,92 @@ bool hex_positively_oriented(const std::array<RationalCorner, 8>& corners) {
     return six_volume > 0;
 }
 
+namespace {
+
+bool inside_box(const CellComplex& cx, const LatticePoint& lo, const LatticePoint& hi) {
+    for (std::size_t n = 0; n < cx.n_vertices(); ++n)
+        for (int a = 0; a < 3; ++a)
+            if (cx.position(VertexHandle(n))[a] < lo[a] || cx.position(VertexHandle(n))[a] > hi[a]) return false;
+    return true;
+}
+
+// What B1-B5 read of the whole complex, computed once for all the vertices checked.
+struct BoundaryChecks {
+    const CellComplex& cx;
+    Incidence inc;
+    ValidationReport validation;
+    ClippedDual dual;
+    std::map<std::uint32_t, std::size_t> hex_of;
+    std::map<std::uint32_t, std::string> dual_error;
+
+    BoundaryChecks(const CellComplex& complex, const LatticePoint& lo, const LatticePoint& hi) : cx(complex), inc(complex) {
+        // B1: the cells are closed, consistently oriented, conforming (DESIGN.md 4, items 1-2).
+        ValidationOptions options;
+        options.interior_filter = [](VertexHandle) { return false; };  // interior vertices: compositional.hpp
+        validation = validate(cx, options);
+        dual = clipped_dual(cx, inc, lo, hi);
+        for (std::size_t h = 0; h < dual.hexes.size(); ++h) hex_of[dual.primal_vertex[h].index()] = h;
+        for (const DualError& e : dual.errors) dual_error[e.vertex.index()] = e.message;
+    }
+
+    // B1-B5 at v, on k >= 1 root planes of `sides`: the first reason it fails, or nothing.
+    std::optional<std::string> defect(VertexHandle v, int k, const RootSides& sides) const {
+        if (!validation.ok()) return "the cells are not closed, oriented and conforming";
+        if (const char* why = star_defect(cx, inc, v, sides)) return why;
+        if (const char* why = link_defect(vertex_link(cx, inc, v), k)) return why;
+        const auto h = hex_of.find(v.index());
+        if (h == hex_of.end()) {
+            const auto e = dual_error.find(v.index());
+            return e != dual_error.end() ? e->second : "no clipped dual cell";
+        }
+        if (const char* why = dual_defect(dual, h->second, k, sides)) return why;
+        return std::nullopt;
+    }
+};
+
+}  // namespace
+
 BoundaryVertexReport check_boundary_vertices(const CellComplex& cx, std::int64_t half, const RootSides& sides) {
     BoundaryVertexReport report;
-    const Incidence inc(cx);
     LatticePoint lo{-half, -half, -half}, hi{half, half, half};
     for (int a = 0; a < 3; ++a) {
         if (sides[static_cast<std::size_t>(a)] > 0) lo[a] = 0;
         if (sides[static_cast<std::size_t>(a)] < 0) hi[a] = 0;
     }
-    // B1: the cells are closed, consistently oriented, conforming (DESIGN.md 4, items 1-2).
-    ValidationOptions options;
-    options.interior_filter = [](VertexHandle) { return false; };  // interior vertices: compositional.hpp
-    const ValidationReport validation = validate(cx, options);
-    const ClippedDual dual = clipped_dual(cx, inc, lo, hi);
-    std::map<std::uint32_t, std::size_t> hex_of;
-    for (std::size_t h = 0; h < dual.hexes.size(); ++h) hex_of[dual.primal_vertex[h].index()] = h;
-    std::map<std::uint32_t, std::string> dual_error;
-    for (const DualError& e : dual.errors) dual_error[e.vertex.index()] = e.message;
+    const BoundaryChecks checks(cx, lo, hi);
     for (std::size_t n = 0; n < cx.n_vertices(); ++n) {
         const VertexHandle v(n);
         const LatticePoint& p = cx.position(v);
         const int k = bits(root_planes(p, sides));
         if (k == 0 || !on_checked_planes(p, half, sides)) continue;
         ++report.checked;
-        const char* why = nullptr;
-        std::string dual_message;
-        if (!validation.ok()) why = "the cells are not closed, oriented and conforming";
-        if (!why) why = star_defect(cx, inc, v, sides);
-        if (!why) why = link_defect(vertex_link(cx, inc, v), k);
-        if (!why && !hex_of.count(v.index())) {
-            dual_message = dual_error.count(v.index()) ? dual_error[v.index()] : "no clipped dual cell";
-            why = dual_message.c_str();
-        }
-        if (!why) why = dual_defect(dual, hex_of[v.index()], k, sides);
+        const auto why = checks.defect(v, k, sides);
         if (!why) continue;
         std::ostringstream os;
-        os << "vertex (" << p[0] << ',' << p[1] << ',' << p[2] << "): " << why;
+        os << "vertex (" << p[0] << ',' << p[1] << ',' << p[2] << "): " << *why;
         report.failures.push_back(os.str());
     }
     return report;
+}
+
+std::optional<std::string> boundary_vertex_defect(const CellComplex& cx, const RootSides& sides) {
+    const int k = bits(root_planes(LatticePoint{}, sides));
+    if (k == 0) return "no root plane through the vertex";
+    std::int64_t half = 1;  // the box: the root sides of the planes through v, every cell inside
+    for (std::size_t n = 0; n < cx.n_vertices(); ++n)
+        for (int a = 0; a < 3; ++a) half = std::max(half, std::abs(cx.position(VertexHandle(n))[a]) + 1);
+    LatticePoint lo{-half, -half, -half}, hi{half, half, half};
+    for (int a = 0; a < 3; ++a) {
+        if (sides[static_cast<std::size_t>(a)] > 0) lo[a] = 0;
+        if (sides[static_cast<std::size_t>(a)] < 0) hi[a] = 0;
+    }
+    for (std::size_t n = 0; n < cx.n_vertices(); ++n) {
+        const VertexHandle v(n);
+        if (cx.position(v) != LatticePoint{}) continue;
+        if (!inside_box(cx, lo, hi)) return "a cell at the vertex is on the outside of a root plane";
+        return BoundaryChecks(cx, lo, hi).defect(v, k, sides);
+    }
+    return "the vertex is in no cell";
 }
 
 }  // namespace dualhex

@@ -75,10 +75,20 @@ ConfigurationComplex build_star(const WeakStarInfluence& inf, const TransitionRu
 
 Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_t>& index, const LatticePoint& v,
            const LatticePoint& g, const std::array<Leaf, 8>& leaves) {
+    Forcing forced(leaves);
+    return split(inf, index, v, g, std::vector<Leaf>(leaves.begin(), leaves.end()), forced, StatusModel{});
+}
+
+Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_t>& index, const LatticePoint& v,
+           const LatticePoint& g, const std::vector<Leaf>& leaves, Forcing& forced, const StatusModel& model) {
     Pair p{v - g};
     std::set<std::pair<int, Index3>> distinct;
     std::map<Status, std::set<int>> readers;
-    Forcing forced(leaves);
+    const auto value = [&](const Status& x, const Leaf& reader) -> std::optional<bool> {
+        if (model.read)
+            if (const auto r = model.read(x, reader)) return r;
+        return forced(x);
+    };
     for (const Leaf& leaf : leaves) {
         if (!distinct.insert({leaf.level, leaf.cell}).second) continue;
         LeafBits b{leaf_at(inf, index, v, leaf)};
@@ -89,7 +99,7 @@ Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_
         }
         std::set<Status> mine;
         for (const auto& [bit, x] : b.at.reads)
-            if (!forced(x)) mine.insert(x);
+            if (!value(x, leaf)) mine.insert(model.name(x));
         for (const Status& x : mine) readers[x].insert(static_cast<int>(p.leaves.size()));
         p.leaves.push_back(std::move(b));
     }
@@ -97,7 +107,7 @@ Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_
     std::set<Status> shared;
     for (const auto& [x, who] : readers)
         if (who.size() > 1) shared.insert(x);
-    const auto links = implications(readers);
+    const auto links = implications(readers, model);
     for (const auto& [a, b] : links)
         if (readers.at(a) != readers.at(b)) shared.insert(a), shared.insert(b);
     std::map<Status, int> shared_index;
@@ -106,8 +116,9 @@ Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_
     for (std::size_t n = 0; n < p.leaves.size(); ++n) {
         LeafBits& b = p.leaves[n];
         std::map<Status, int> own_index;
-        for (const auto& [bit, x] : b.at.reads) {
-            if (const auto f = forced(x)) b.fixed |= *f ? 1 << bit : 0;
+        for (const auto& [bit, raw] : b.at.reads) {
+            const Status x = model.name(raw);
+            if (const auto f = value(raw, b.at.leaf)) b.fixed |= *f ? 1 << bit : 0;
             else if (const auto it = shared_index.find(x); it != shared_index.end()) b.shared.push_back({bit, it->second});
             else b.own.push_back({bit, own_index.emplace(x, static_cast<int>(own_index.size())).first->second});
         }

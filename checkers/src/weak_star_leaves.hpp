@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -134,7 +135,12 @@ class Forcing {
 public:
     /// `one_level_finer_forces_fine`: a wrong rule, for the test of check_weak_star_assumptions.
     explicit Forcing(const std::array<Leaf, 8>& leaves, bool one_level_finer_forces_fine = false)
-        : leaves_(leaves), finer_(one_level_finer_forces_fine ? 1 : 2) {}
+        : leaves_(leaves.begin(), leaves.end()), finer_(one_level_finer_forces_fine ? 1 : 2) {}
+    /// On the root surface under `Coarse` (proofs/README.md W13): only the inside leaves
+    /// exist, a cell `outside` the root reads not fine, and no implication into it holds, so
+    /// the last clause does not look at it.
+    Forcing(std::vector<Leaf> leaves, std::function<bool(const Status&)> outside)
+        : leaves_(std::move(leaves)), finer_(2), outside_(std::move(outside)) {}
     std::optional<bool> operator()(const Status& x) {
         if (const auto it = memo_.find(x); it != memo_.end()) return it->second;
         const std::optional<bool> f = compute(x);
@@ -145,6 +151,7 @@ public:
 private:
     std::optional<bool> compute(const Status& x) {
         const auto& [k, cell] = x;
+        if (outside_ && outside_(x)) return false;
         for (const Leaf& leaf : leaves_) {
             if (leaf.level >= k + 1 && ancestor(leaf.cell, leaf.level - k) == cell) return leaf.level >= k + finer_;
             if (leaf.level <= k && ancestor(cell, k - leaf.level) == leaf.cell) return false;
@@ -153,11 +160,13 @@ private:
             if (leaf.level <= k && face_adjacent(k, cell, leaf.level, leaf.cell)) return false;
         if (k > -1)
             for (const Status& up : fine_implies(x))
-                if (const auto f = (*this)(up); f && !*f) return false;
+                if (!(outside_ && outside_(up)))
+                    if (const auto f = (*this)(up); f && !*f) return false;
         return std::nullopt;
     }
-    const std::array<Leaf, 8>& leaves_;
+    const std::vector<Leaf> leaves_;
     const int finer_;
+    const std::function<bool(const Status&)> outside_;
     std::map<Status, std::optional<bool>> memo_;
 };
 

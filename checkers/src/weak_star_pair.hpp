@@ -4,6 +4,7 @@
 // shared and private assignments, the reference; compositional_weak_star_search.cpp: the
 // backtracking search over partial assignments, proofs/README.md W9 (vi)-(vii)).
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -35,9 +36,26 @@ struct Pair {
     std::vector<std::pair<int, int>> implies;  // between shared statuses (indices)
 };
 
+// How the statuses read at v relate to the root (proofs/README.md W13); off the root
+// surface both are empty and statuses are read as they are.
+struct StatusModel {
+    /// `Mirror`: x's representative among its images under the reflections across the root
+    /// planes through v (the mirrored grid is symmetric under them, so they are one status).
+    std::function<Status(const Status&)> canonical;
+    /// `Coarse`: x lies outside the root: it reads not fine and no implication into it holds.
+    std::function<bool(const Status&)> outside;
+    /// A wrong policy (tests): what x reads to one leaf if not the forced value (readers may
+    /// then disagree about a cell).
+    std::function<std::optional<bool>(const Status&, const Leaf& reader)> read;
+    [[nodiscard]] Status name(const Status& x) const { return canonical ? canonical(x) : x; }
+    [[nodiscard]] bool out(const Status& x) const { return outside && outside(x); }
+};
+
 // fine_implies among the free statuses read, closed under chains through statuses not read
-// (a fine cell's ancestors are fine, and so on up).
-inline std::vector<std::pair<Status, Status>> implications(const std::map<Status, std::set<int>>& readers) {
+// (a fine cell's ancestors are fine, and so on up); under a model, chains run over the
+// representatives and stop at a cell outside the root.
+inline std::vector<std::pair<Status, Status>> implications(const std::map<Status, std::set<int>>& readers,
+                                                           const StatusModel& model = {}) {
     std::vector<std::pair<Status, Status>> out;
     for (const auto& [x, who] : readers) {
         std::set<Status> reached, frontier{x};
@@ -45,18 +63,25 @@ inline std::vector<std::pair<Status, Status>> implications(const std::map<Status
             std::set<Status> next;
             for (const Status& y : frontier)
                 if (y.first > -1)
-                    for (const Status& z : fine_implies(y))
+                    for (const Status& raw : fine_implies(y)) {
+                        if (model.out(raw)) continue;
+                        const Status z = model.name(raw);
                         if (reached.insert(z).second) next.insert(z);
+                    }
             frontier = std::move(next);
         }
         for (const Status& z : reached)
-            if (readers.count(z)) out.push_back({x, z});
+            if (z != x && readers.count(z)) out.push_back({x, z});
     }
     return out;
 }
 
 Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_t>& index, const LatticePoint& v,
            const LatticePoint& g, const std::array<Leaf, 8>& leaves);
+/// The same for the leaves `readers` only (their pieces are the star), statuses forced by
+/// `forced` (true facts about the leaves of the whole configuration) and named by `model`.
+Pair split(const WeakStarInfluence& inf, const std::map<LatticePoint, std::size_t>& index, const LatticePoint& v,
+           const LatticePoint& g, const std::vector<Leaf>& readers, Forcing& forced, const StatusModel& model);
 
 /// The distinct stars of a pair: pieces per leaf -> a witness context per leaf.
 using Stars = std::map<std::vector<int>, std::vector<int>>;

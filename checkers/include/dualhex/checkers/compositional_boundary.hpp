@@ -105,6 +105,12 @@ struct BoundaryVertexReport {
 [[nodiscard]] BoundaryVertexReport check_boundary_vertices(const CellComplex& complex, std::int64_t half,
                                                            const RootSides& sides);
 
+/// B1-B5 at the one vertex at the origin of `complex` (its star: every cell at it), which
+/// lies on the root planes x_a = 0 of the axes with sides[a] != 0 (k = their number), the
+/// cells on their root sides: the first reason it fails, or nothing. The per-vertex check of
+/// check_boundary_vertices, for stars built alone (proofs/README.md W13).
+[[nodiscard]] std::optional<std::string> boundary_vertex_defect(const CellComplex& complex, const RootSides& sides);
+
 /// 6 * the signed volume of a hexahedron in VTK order, every corner given as sum / denominator
 /// (exact; positive iff positively oriented).
 struct RationalCorner {
