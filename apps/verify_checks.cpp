@@ -138,6 +138,7 @@ CheckRegistry default_checks() {
     add_variant_checks(r);
     add_weak_checks(r);
     add_compositional_checks(r);
+    add_weak_root_checks(r);
     return r;
 }
 

@@ -44,6 +44,7 @@ void add_scheme_checks(CheckRegistry& registry);  // verify_schemes.cpp
 void add_variant_checks(CheckRegistry& registry);  // verify_variants.cpp
 void add_weak_checks(CheckRegistry& registry);    // verify_weak.cpp
 void add_compositional_checks(CheckRegistry& registry);  // verify_compositional.cpp
+void add_weak_root_checks(CheckRegistry& registry);      // verify_weak_root.cpp
 
 /// Every check that exists so far, in run order.
 CheckRegistry default_checks();
