@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
-#include <unordered_set>
 
 #include <tbb/parallel_for.h>
 
@@ -15,12 +14,55 @@ namespace {
 
 constexpr std::size_t kMaxLeaves = 8;
 using Tuple = std::array<int, kMaxLeaves>;  // unused leaves: -1
-struct TupleHash {
-    std::size_t operator()(const Tuple& s) const {
-        std::size_t h = 1469598103934665603ULL;
-        for (int x : s) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ULL;
-        return h;
+
+// A flat set of tuples (open addressing, linear probing, at most half full): the chunks ask
+// it once per window, millions of times, nearly always about a tuple already seen, where a
+// node-based set's chained multiplies and pointer chase were a fifth of the enumeration.
+class TupleSet {
+public:
+    TupleSet() { slots_.assign(kInitial, empty()); }
+    /// True if the tuple was not in the set (it is now).
+    bool insert(const Tuple& t) {
+        if (2 * (size_ + 1) > slots_.size()) grow();
+        std::size_t i = home(t);
+        for (; slots_[i][0] != kEmpty; i = (i + 1) & (slots_.size() - 1))
+            if (slots_[i] == t) return false;
+        slots_[i] = t;
+        ++size_;
+        return true;
     }
+
+private:
+    static constexpr int kEmpty = -2;  // no outcome id (those are >= 0, unused leaves -1)
+    static constexpr std::size_t kInitial = 1024;
+    static Tuple empty() {
+        Tuple t;
+        t.fill(kEmpty);
+        return t;
+    }
+    // Pairs of entries as 64-bit words times odd constants (independent multiplies), mixed once.
+    std::size_t home(const Tuple& t) const {
+        std::uint64_t h = 0;
+        constexpr std::uint64_t kFactor[4] = {0x9e3779b97f4a7c15ULL, 0xd6e8feb86659fd93ULL, 0xa0761d6478bd642fULL,
+                                              0xe7037ed1a0b428dbULL};
+        for (std::size_t k = 0; k < kMaxLeaves / 2; ++k)
+            h += (static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[2 * k])) << 32 |
+                  static_cast<std::uint32_t>(t[2 * k + 1])) * kFactor[k];
+        h ^= h >> 29;
+        h *= 0xbf58476d1ce4e5b9ULL;
+        h ^= h >> 32;
+        return static_cast<std::size_t>(h) & (slots_.size() - 1);
+    }
+    void grow() {
+        std::vector<Tuple> old = std::move(slots_);
+        slots_.assign(2 * old.size(), empty());
+        size_ = 0;
+        for (const Tuple& t : old)
+            if (t[0] != kEmpty) insert(t);
+    }
+
+    std::vector<Tuple> slots_;
+    std::size_t size_ = 0;
 };
 
 std::uint64_t scatter(std::uint64_t a, const std::vector<int>& indices) {
@@ -58,10 +100,12 @@ Split split_variables(const std::vector<LeafOutcomes>& leaves, std::size_t varia
 }
 
 // gather(pattern, depends) for every leaf by tables over the pattern's bytes (the
-// enumeration gathers once per leaf for each of up to 2^19 shared assignments).
+// enumeration gathers once per leaf for each of up to 2^20 shared assignments). Only the
+// bytes that hold variables are looked up: a pattern has no bit at or above `variables`.
 class LeafGather {
 public:
-    explicit LeafGather(const std::vector<LeafOutcomes>& leaves) : bytes_(leaves.size()) {
+    LeafGather(const std::vector<LeafOutcomes>& leaves, std::size_t variables)
+        : used_bytes_(std::min(kBytes, (variables + 7) / 8)), bytes_(leaves.size()) {
         for (std::size_t n = 0; n < leaves.size(); ++n)
             for (std::size_t k = 0; k < kBytes; ++k)
                 for (std::uint64_t v = 0; v < 256; ++v)
@@ -69,12 +113,13 @@ public:
     }
     [[nodiscard]] std::uint64_t operator()(std::size_t n, std::uint64_t pattern) const {
         std::uint64_t a = 0;
-        for (std::size_t k = 0; k < kBytes; ++k) a |= bytes_[n][k][(pattern >> (8 * k)) & 255U];
+        for (std::size_t k = 0; k < used_bytes_; ++k) a |= bytes_[n][k][(pattern >> (8 * k)) & 255U];
         return a;
     }
 
 private:
     static constexpr std::size_t kBytes = 8;
+    std::size_t used_bytes_;
     std::vector<std::array<std::array<std::uint32_t, 256>, kBytes>> bytes_;  // 8 KB a leaf: not on a task's stack
 };
 
@@ -128,21 +173,21 @@ std::vector<std::uint64_t> distinct_outcome_tuples(const std::vector<LeafOutcome
     constexpr std::uint64_t kChunk = 4096;
     using Firsts = std::vector<std::pair<Tuple, std::uint64_t>>;
     std::vector<Firsts> chunks(static_cast<std::size_t>((bases + kChunk - 1) / kChunk));
-    const LeafGather leaf_gather(leaves);
+    const LeafGather leaf_gather(leaves, variables);
     tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
-        std::unordered_set<Tuple, TupleHash> seen;
+        TupleSet seen;
         Choices choices;
         for (std::uint64_t s = c * kChunk; s < std::min(bases, (c + 1) * kChunk); ++s)
             windows_over_base(leaves, split, leaf_gather, scatter(s, split.shared), choices,
                               [&](const Tuple& tuple, std::uint64_t pattern) {
-                                  if (seen.insert(tuple).second) chunks[c].emplace_back(tuple, pattern);
+                                  if (seen.insert(tuple)) chunks[c].emplace_back(tuple, pattern);
                               });
     });
-    std::unordered_set<Tuple, TupleHash> seen;
+    TupleSet seen;
     std::vector<std::uint64_t> witnesses;
     for (const Firsts& chunk : chunks)
         for (const auto& [tuple, pattern] : chunk)
-            if (seen.insert(tuple).second) witnesses.push_back(pattern);
+            if (seen.insert(tuple)) witnesses.push_back(pattern);
     return witnesses;
 }
 
