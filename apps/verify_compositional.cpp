@@ -1,6 +1,11 @@
 // The compositional argument for `dualhex verify` (checkers/compositional.hpp): the reduction
 // lemma and every window of every parity type under the strong rule.
+#include <array>
+#include <optional>
 #include <sstream>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "dualhex/checkers/compositional.hpp"
 #include "dualhex/checkers/compositional_boundary.hpp"
@@ -74,20 +79,47 @@ CheckOutcome check_root_boundary() {
 // Weak balance (compositional_weak.hpp, proofs/README.md "Weak balance"): the weak rule's
 // computed reduction facts (reach, lemma, visible domain), the grid with four levels at a
 // point installed and verified (tested, not proved), and what a box window would read.
+// The grid with levels m..m+3 at one point, for each of the 8 corners it can point to,
+// installed with the weak rule and verified: the corners in parallel, tallied in corner order.
+struct SpreadOutcome {
+    std::vector<int> at;  // the levels at the point (of the last corner)
+    int valid = 0;
+    std::string failure;  // the first corner's that failed
+};
+
+SpreadOutcome check_spread_grids(const ElementLibrary& library) {
+    std::array<std::vector<int>, 8> at;
+    std::array<std::optional<InstallVerification>, 8> verified;
+    tbb::parallel_for(0, 8, [&](int corner) {
+        const LeafGrid spread = spread_three_grid(2, corner);
+        at[static_cast<std::size_t>(corner)] = levels_at(spread, {2, 2, 2}, 2);
+        verified[static_cast<std::size_t>(corner)] = verify_installation(install(spread, WeakRule(), library));
+    });
+    SpreadOutcome out;
+    for (std::size_t corner = 0; corner < 8; ++corner) {
+        const InstallVerification& v = *verified[corner];
+        if (v.ok() && at[corner].front() + 3 == at[corner].back()) ++out.valid;
+        else if (out.failure.empty()) out.failure = "corner " + std::to_string(corner) + ": " + v.summary();
+    }
+    out.at = at.back();
+    return out;
+}
+
 CheckOutcome check_compositional_weak() {
     const auto library = ElementLibrary::load_default();
-    const WeakLemmaResult r = check_weak_lemmas(WeakRule());
-    // The grid with levels m..m+3 at one point, for each of the 8 corners it can point to.
-    std::vector<int> at;
-    int spread_valid = 0;
-    std::string spread_failure;
-    for (int corner = 0; corner < 8; ++corner) {
-        const LeafGrid spread = spread_three_grid(2, corner);
-        at = levels_at(spread, {2, 2, 2}, 2);
-        const InstallVerification v = verify_installation(install(spread, WeakRule(), library));
-        if (v.ok() && at.front() + 3 == at.back()) ++spread_valid;
-        else if (spread_failure.empty()) spread_failure = "corner " + std::to_string(corner) + ": " + v.summary();
-    }
+    // Three independent computations, each short and mostly serial: side by side.
+    WeakLemmaResult r;
+    SpreadOutcome spread;
+    WeakStarInfluence influence;
+    std::vector<WeakStarReads> star_reads;
+    tbb::parallel_invoke([&] { r = check_weak_lemmas(WeakRule()); }, [&] { spread = check_spread_grids(library); },
+                         [&] {
+                             influence = weak_star_influence(WeakRule(), library);
+                             star_reads = weak_star_reads(influence);
+                         });
+    const std::vector<int>& at = spread.at;
+    const int spread_valid = spread.valid;
+    const std::string& spread_failure = spread.failure;
     CheckOutcome out;
     out.status = r.all_passed() && spread_valid == 8 ? CheckStatus::kPass : CheckStatus::kFail;
     out.summary = "weak lemma " + std::to_string(r.lemma_plain) + "/" + std::to_string(r.lemma_contexts) +
@@ -114,13 +146,12 @@ CheckOutcome check_compositional_weak() {
     if (!spread_failure.empty()) report << "  FAIL spread grid, " << spread_failure << '\n';
     // W7, relevant bits only: what each context bit changes at each point of a leaf, and
     // what the leaves at a vertex read jointly, per leaf configuration.
-    const WeakStarInfluence influence = weak_star_influence(WeakRule(), library);
     report << "  W7 influence: " << influence.positions.size() << " vertex positions in a leaf, "
            << influence.distinct_pieces << " distinct pieces, relevant bits per position:";
     for (const auto& [k, n] : influence.relevant_histogram) report << ' ' << k << ':' << n;
     report << '\n';
     nlohmann::json stars = nlohmann::json::array();
-    for (const auto& w : weak_star_reads(influence)) {
+    for (const auto& w : star_reads) {
         const std::string g = std::to_string(w.parity[0]) + std::to_string(w.parity[1]) + std::to_string(w.parity[2]);
         stars.push_back({{"g", g}, {"vertices", w.vertices}, {"configurations", w.configurations},
                          {"max_free", w.max_free}, {"max_shared", w.max_shared}, {"joint", w.joint}});
