@@ -145,8 +145,8 @@ std::vector<std::uint64_t> distinct_windows(const WindowType& t, const Transitio
     return distinct_outcome_tuples(leaves, t.reads.size(), shared_count);
 }
 
-ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
-                                  detail::TemplateCache& cache) {
+detail::ConfigurationParts window_parts(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
+                                        detail::TemplateCache& cache) {
     const std::int64_t U = cache.unit();
     const LatticePoint g{t.parity[0], t.parity[1], t.parity[2]};
     const auto wrap = [&](const LatticePoint& p) { return p - g * U; };
@@ -170,8 +170,12 @@ ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, co
                                                   placed.context.application_point * U, leaf * U, U, wrap, vs, loop, hfs);
         out.coarse_leaves.push_back(std::move(placed));
     }
-    out.complex = std::move(builder).build();
-    return out;
+    return detail::parts_of(std::move(out), std::move(builder));
+}
+
+ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
+                                  detail::TemplateCache& cache) {
+    return detail::complete(window_parts(t, pattern, rule, cache));
 }
 
 std::vector<PlacedLeaf> coarse_placements(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule) {

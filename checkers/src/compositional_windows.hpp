@@ -9,6 +9,7 @@
 
 #include "dualhex/checkers/compositional.hpp"
 #include "dualhex/install/element_templates.hpp"
+#include "configuration_parts.hpp"
 
 namespace dualhex::compositional_detail {
 
@@ -58,6 +59,10 @@ void check_lemma(const TransitionRule& rule, CompositionalResult& result);
 /// B(g) for one pattern, translated so that g is the origin: [-U, U]^3.
 [[nodiscard]] ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
                                                 detail::TemplateCache& cache);
+/// The same before its CellComplex is made (configuration_parts.hpp): build_window is
+/// complete() of it.
+[[nodiscard]] detail::ConfigurationParts window_parts(const WindowType& t, std::uint64_t pattern,
+                                                      const TransitionRule& rule, detail::TemplateCache& cache);
 /// The coarse leaves of that window with what the rule places there (build_window's
 /// coarse_leaves, without building). Throws what the rule throws.
 [[nodiscard]] std::vector<PlacedLeaf> coarse_placements(const WindowType& t, std::uint64_t pattern,

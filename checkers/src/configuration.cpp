@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "dualhex/install/element_templates.hpp"
+#include "configuration_parts.hpp"
 #include "window_check.hpp"
 #include "dualhex/checkers/cube_window.hpp"
 #include "dualhex/checkers/periodic_configuration.hpp"
@@ -60,7 +61,7 @@ using detail::floor_mod;
 // that are built; `fine(o)` the status of any octant cube (for contexts); `wrap` maps
 // lattice points to keys.
 template <class Fine, class Wrap>
-ConfigurationComplex assemble(std::uint8_t mask, const std::vector<Index3>& octants, Fine&& fine, Wrap&& wrap,
+detail::ConfigurationParts assemble(std::uint8_t mask, const std::vector<Index3>& octants, Fine&& fine, Wrap&& wrap,
                               const TransitionRule& rule, const ElementLibrary& library) {
     detail::TemplateCache cache(library);
     const std::int64_t U = cache.unit();
@@ -90,14 +91,13 @@ ConfigurationComplex assemble(std::uint8_t mask, const std::vector<Index3>& octa
             out.coarse_leaves.push_back(std::move(leaf));
         }
     }
-    out.complex = std::move(builder).build();
-    return out;
+    return detail::parts_of(std::move(out), std::move(builder));
 }
 
 }  // namespace
 
-ConfigurationComplex build_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
-                                                  const ElementLibrary& library) {
+detail::ConfigurationParts detail::periodic_configuration_parts(std::uint8_t mask, const TransitionRule& rule,
+                                                                const ElementLibrary& library) {
     std::vector<Index3> octants;
     for (int b = 0; b < 8; ++b) octants.push_back({b & 1, (b >> 1) & 1, (b >> 2) & 1});
     const auto fine = [mask](const Index3& o) {
@@ -111,13 +111,19 @@ ConfigurationComplex build_periodic_configuration(std::uint8_t mask, const Trans
     return assemble(mask, octants, fine, wrap, rule, library);
 }
 
+ConfigurationComplex build_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
+                                                  const ElementLibrary& library) {
+    return detail::complete(detail::periodic_configuration_parts(mask, rule, library));
+}
+
 ConfigurationReport check_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
                                                  const ElementLibrary& library) {
     return check(mask, [&] { return build_periodic_configuration(mask, rule, library); },
                  [](const LatticePoint&) { return true; }, [](const CellComplex&, std::span<const VertexHandle>) { return false; });
 }
 
-ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {
+detail::ConfigurationParts detail::cube_window_parts(std::uint8_t mask, const TransitionRule& rule,
+                                                     const ElementLibrary& library) {
     std::vector<Index3> octants;
     for (int b = 0; b < 8; ++b) octants.push_back({(b & 1) - 1, ((b >> 1) & 1) - 1, ((b >> 2) & 1) - 1});
     // Octant index o (min corner 2o): -1 is the -side, 0 the +side; beyond, the nearest.
@@ -128,11 +134,15 @@ ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& 
     return assemble(mask, octants, fine, [](const LatticePoint& p) { return p; }, rule, library);
 }
 
+ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {
+    return detail::complete(detail::cube_window_parts(mask, rule, library));
+}
+
 // Three-level assembly over octant cubes first..first+n-1 per axis (octant cube = 4U: two
 // level-0 leaves of 2U). level_at(p): the level of the octant cube containing lattice point p
 // (any p: the contexts reach beyond the built cubes); wrap: lattice point -> key.
 template <class LevelAt, class Wrap>
-ConfigurationComplex assemble_levels(int first, int n_octants, LevelAt&& level_at, Wrap&& wrap, std::int64_t U,
+detail::ConfigurationParts assemble_levels(int first, int n_octants, LevelAt&& level_at, Wrap&& wrap, std::int64_t U,
                                      detail::TemplateCache& cache, const TransitionRule& rule) {
     const std::int64_t octant = 4 * U;
     ConfigurationComplex out;
@@ -188,12 +198,11 @@ ConfigurationComplex assemble_levels(int first, int n_octants, LevelAt&& level_a
                     out.coarse_leaves.push_back(std::move(leaf));
                 }
             }
-    out.complex = std::move(builder).build();
-    return out;
+    return detail::parts_of(std::move(out), std::move(builder));
 }
 
-ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
-                                           const TransitionRule& rule, const ElementLibrary& library) {
+detail::ConfigurationParts detail::periodic_levels_parts(const std::function<int(int, int, int)>& level, int n_octants,
+                                                         const TransitionRule& rule, const ElementLibrary& library) {
     detail::TemplateCache cache(library);
     const std::int64_t U = cache.unit();
     const std::int64_t octant = 4 * U;
@@ -208,8 +217,13 @@ ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int
     return assemble_levels(0, n_octants, level_at, wrap, U, cache, rule);
 }
 
-ConfigurationComplex build_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
-                                         const ElementLibrary& library) {
+ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
+                                           const TransitionRule& rule, const ElementLibrary& library) {
+    return detail::complete(detail::periodic_levels_parts(level, n_octants, rule, library));
+}
+
+detail::ConfigurationParts detail::window_levels_parts(const std::array<int, 8>& levels, const TransitionRule& rule,
+                                                       const ElementLibrary& library) {
     detail::TemplateCache cache(library);
     const std::int64_t U = cache.unit();
     const std::int64_t octant = 4 * U;
@@ -222,6 +236,11 @@ ConfigurationComplex build_window_levels(const std::array<int, 8>& levels, const
         return levels[static_cast<std::size_t>(b)];
     };
     return assemble_levels(-1, 2, level_at, [](const LatticePoint& p) { return p; }, U, cache, rule);
+}
+
+ConfigurationComplex build_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
+                                         const ElementLibrary& library) {
+    return detail::complete(detail::window_levels_parts(levels, rule, library));
 }
 
 ConfigurationReport check_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,

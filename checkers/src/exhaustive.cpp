@@ -70,14 +70,14 @@ ExhaustiveResult run_exhaustive(const TransitionRule& rule, const ElementLibrary
                                  [](const LatticePoint&) { return true; },
                                  [](const CellComplex&, std::span<const VertexHandle>) { return false; });
         },
-        [&](std::size_t m) { return build_periodic_configuration(masks[m], rule, library); },
-        [&](const CellComplex& k, const TorusMotion& motion) { return detail::torus_form(k, motion, 2 * U); });
+        [&](std::size_t m) { return detail::periodic_configuration_parts(masks[m], rule, library); },
+        [&](const detail::FormArrays& k, const TorusMotion& motion) { return detail::torus_form(k, motion, 2 * U); });
     res.window = detail::check_by_congruence(
         detail::congruence(masks, detail::all_symmetries(), window_image),
         [&](std::size_t m, ConfigurationComplex& built) {
             return detail::check_window(masks[m], 2 * U, [&] { return built = build_cube_window(masks[m], rule, library); });
         },
-        [&](std::size_t m) { return build_cube_window(masks[m], rule, library); }, detail::symmetric_form);
+        [&](std::size_t m) { return detail::cube_window_parts(masks[m], rule, library); }, detail::symmetric_form);
     for (int m = 0; m < kConfigurationCount; ++m) {
         const auto mask = static_cast<std::uint8_t>(m);
         const ConfigurationReport& p = res.periodic[static_cast<std::size_t>(m)];

@@ -94,14 +94,14 @@ WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const Eleme
                                  [](const LatticePoint&) { return true; },
                                  [](const CellComplex&, std::span<const VertexHandle>) { return false; });
         },
-        [&](std::size_t i) { return build_periodic_levels(torus_levels(configurations[i]), 2, rule, library); },
-        [&](const CellComplex& k, const TorusMotion& m) { return detail::torus_form(k, m, octant); });
+        [&](std::size_t i) { return detail::periodic_levels_parts(torus_levels(configurations[i]), 2, rule, library); },
+        [&](const detail::FormArrays& k, const TorusMotion& m) { return detail::torus_form(k, m, octant); });
     const std::vector<ConfigurationReport> windows = detail::check_by_congruence(
         detail::congruence(configurations, detail::all_symmetries(), moved),
         [&](std::size_t i, ConfigurationComplex& built) {
             return detail::check_window(0, octant, [&] { return built = build_window_levels(as_levels(configurations[i]), rule, library); });
         },
-        [&](std::size_t i) { return build_window_levels(as_levels(configurations[i]), rule, library); },
+        [&](std::size_t i) { return detail::window_levels_parts(as_levels(configurations[i]), rule, library); },
         detail::symmetric_form);
 
     std::set<LevelAssignment> classes, three;
