@@ -62,8 +62,7 @@ using detail::floor_mod;
 // lattice points to keys.
 template <class Fine, class Wrap>
 detail::ConfigurationParts assemble(std::uint8_t mask, const std::vector<Index3>& octants, Fine&& fine, Wrap&& wrap,
-                              const TransitionRule& rule, const ElementLibrary& library) {
-    detail::TemplateCache cache(library);
+                                    const TransitionRule& rule, detail::TemplateCache& cache) {
     const std::int64_t U = cache.unit();
     ConfigurationComplex out;
     out.mask = mask;
@@ -97,23 +96,24 @@ detail::ConfigurationParts assemble(std::uint8_t mask, const std::vector<Index3>
 }  // namespace
 
 detail::ConfigurationParts detail::periodic_configuration_parts(std::uint8_t mask, const TransitionRule& rule,
-                                                                const ElementLibrary& library) {
+                                                                TemplateCache& cache) {
     std::vector<Index3> octants;
     for (int b = 0; b < 8; ++b) octants.push_back({b & 1, (b >> 1) & 1, (b >> 2) & 1});
     const auto fine = [mask](const Index3& o) {
         const int b = static_cast<int>(floor_mod(o[0], 2) | floor_mod(o[1], 2) << 1 | floor_mod(o[2], 2) << 2);
         return ((mask >> b) & 1) != 0;
     };
-    const std::int64_t period = 4 * detail::common_unit(library);
+    const std::int64_t period = 4 * cache.unit();
     const auto wrap = [period](const LatticePoint& p) {
         return LatticePoint{floor_mod(p.x, period), floor_mod(p.y, period), floor_mod(p.z, period)};
     };
-    return assemble(mask, octants, fine, wrap, rule, library);
+    return assemble(mask, octants, fine, wrap, rule, cache);
 }
 
 ConfigurationComplex build_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
                                                   const ElementLibrary& library) {
-    return detail::complete(detail::periodic_configuration_parts(mask, rule, library));
+    detail::TemplateCache cache(library);
+    return detail::complete(detail::periodic_configuration_parts(mask, rule, cache));
 }
 
 ConfigurationReport check_periodic_configuration(std::uint8_t mask, const TransitionRule& rule,
@@ -123,7 +123,7 @@ ConfigurationReport check_periodic_configuration(std::uint8_t mask, const Transi
 }
 
 detail::ConfigurationParts detail::cube_window_parts(std::uint8_t mask, const TransitionRule& rule,
-                                                     const ElementLibrary& library) {
+                                                     TemplateCache& cache) {
     std::vector<Index3> octants;
     for (int b = 0; b < 8; ++b) octants.push_back({(b & 1) - 1, ((b >> 1) & 1) - 1, ((b >> 2) & 1) - 1});
     // Octant index o (min corner 2o): -1 is the -side, 0 the +side; beyond, the nearest.
@@ -131,11 +131,12 @@ detail::ConfigurationParts detail::cube_window_parts(std::uint8_t mask, const Tr
         const int b = (o[0] >= 0 ? 1 : 0) | (o[1] >= 0 ? 2 : 0) | (o[2] >= 0 ? 4 : 0);
         return ((mask >> b) & 1) != 0;
     };
-    return assemble(mask, octants, fine, [](const LatticePoint& p) { return p; }, rule, library);
+    return assemble(mask, octants, fine, [](const LatticePoint& p) { return p; }, rule, cache);
 }
 
 ConfigurationComplex build_cube_window(std::uint8_t mask, const TransitionRule& rule, const ElementLibrary& library) {
-    return detail::complete(detail::cube_window_parts(mask, rule, library));
+    detail::TemplateCache cache(library);
+    return detail::complete(detail::cube_window_parts(mask, rule, cache));
 }
 
 // Three-level assembly over octant cubes first..first+n-1 per axis (octant cube = 4U: two
@@ -202,8 +203,7 @@ detail::ConfigurationParts assemble_levels(int first, int n_octants, LevelAt&& l
 }
 
 detail::ConfigurationParts detail::periodic_levels_parts(const std::function<int(int, int, int)>& level, int n_octants,
-                                                         const TransitionRule& rule, const ElementLibrary& library) {
-    detail::TemplateCache cache(library);
+                                                         const TransitionRule& rule, TemplateCache& cache) {
     const std::int64_t U = cache.unit();
     const std::int64_t octant = 4 * U;
     const std::int64_t period = n_octants * octant;
@@ -219,12 +219,12 @@ detail::ConfigurationParts detail::periodic_levels_parts(const std::function<int
 
 ConfigurationComplex build_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,
                                            const TransitionRule& rule, const ElementLibrary& library) {
-    return detail::complete(detail::periodic_levels_parts(level, n_octants, rule, library));
+    detail::TemplateCache cache(library);
+    return detail::complete(detail::periodic_levels_parts(level, n_octants, rule, cache));
 }
 
 detail::ConfigurationParts detail::window_levels_parts(const std::array<int, 8>& levels, const TransitionRule& rule,
-                                                       const ElementLibrary& library) {
-    detail::TemplateCache cache(library);
+                                                       TemplateCache& cache) {
     const std::int64_t U = cache.unit();
     const std::int64_t octant = 4 * U;
     // The window: the 8 octant cubes around P = origin (indices -1, 0); beyond, the nearest.
@@ -240,7 +240,8 @@ detail::ConfigurationParts detail::window_levels_parts(const std::array<int, 8>&
 
 ConfigurationComplex build_window_levels(const std::array<int, 8>& levels, const TransitionRule& rule,
                                          const ElementLibrary& library) {
-    return detail::complete(detail::window_levels_parts(levels, rule, library));
+    detail::TemplateCache cache(library);
+    return detail::complete(detail::window_levels_parts(levels, rule, cache));
 }
 
 ConfigurationReport check_periodic_levels(const std::function<int(int, int, int)>& level, int n_octants,

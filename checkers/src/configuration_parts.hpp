@@ -12,13 +12,9 @@
 #include <utility>
 
 #include "dualhex/checkers/configuration_report.hpp"
+#include "dualhex/install/element_templates.hpp"
 #include "dualhex/topology/complex_builder.hpp"
 #include "oriented_form.hpp"
-
-namespace dualhex {
-class ElementLibrary;
-class TransitionRule;
-}  // namespace dualhex
 
 namespace dualhex::detail {
 
@@ -49,14 +45,15 @@ inline const CellComplex& form_source(const ConfigurationComplex& c) { return c.
 inline FormArrays form_source(const ConfigurationParts& p) { return FormArrays(p.parts); }
 
 /// The parts behind build_periodic_configuration, build_cube_window, build_periodic_levels
-/// and build_window_levels (configuration.cpp; each of those is complete() of these).
+/// and build_window_levels (configuration.cpp; each of those is complete() of these with a
+/// cache of its own). A caller building many configurations passes one cache per thread:
+/// the templates are the same whoever placed them first.
 [[nodiscard]] ConfigurationParts periodic_configuration_parts(std::uint8_t mask, const TransitionRule& rule,
-                                                              const ElementLibrary& library);
-[[nodiscard]] ConfigurationParts cube_window_parts(std::uint8_t mask, const TransitionRule& rule,
-                                                   const ElementLibrary& library);
+                                                              TemplateCache& cache);
+[[nodiscard]] ConfigurationParts cube_window_parts(std::uint8_t mask, const TransitionRule& rule, TemplateCache& cache);
 [[nodiscard]] ConfigurationParts periodic_levels_parts(const std::function<int(int, int, int)>& level, int n_octants,
-                                                       const TransitionRule& rule, const ElementLibrary& library);
+                                                       const TransitionRule& rule, TemplateCache& cache);
 [[nodiscard]] ConfigurationParts window_levels_parts(const std::array<int, 8>& levels, const TransitionRule& rule,
-                                                     const ElementLibrary& library);
+                                                     TemplateCache& cache);
 
 }  // namespace dualhex::detail
