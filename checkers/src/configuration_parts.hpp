@@ -28,13 +28,17 @@ inline ConfigurationParts parts_of(ConfigurationComplex header, ComplexBuilder&&
     return {std::move(header), std::move(builder).take_parts()};
 }
 
-/// The ConfigurationComplex: its CellComplex made from the parts (edges derived), exactly
-/// what ComplexBuilder::build would have made.
+/// The CellComplex of a builder's parts (edges derived): exactly what ComplexBuilder::build
+/// would have made.
+inline CellComplex complex_of(ComplexBuilder::Parts&& a) {
+    return CellComplex(std::move(a.positions), std::move(a.face_offsets), std::move(a.face_loops),
+                       std::move(a.cell_offsets), std::move(a.cell_halffaces));
+}
+
+/// The ConfigurationComplex, its CellComplex made from the parts.
 inline ConfigurationComplex complete(ConfigurationParts&& p) {
     ConfigurationComplex out = std::move(p.header);
-    ComplexBuilder::Parts& a = p.parts;
-    out.complex = CellComplex(std::move(a.positions), std::move(a.face_offsets), std::move(a.face_loops),
-                              std::move(a.cell_offsets), std::move(a.cell_halffaces));
+    out.complex = complex_of(std::move(p.parts));
     return out;
 }
 
