@@ -123,6 +123,25 @@ private:
     std::vector<std::array<std::array<std::uint32_t, 256>, kBytes>> bytes_;  // 8 KB a leaf: not on a task's stack
 };
 
+// scatter(s, indices) by tables over the bytes of s: the enumeration scatters every shared
+// assignment (up to 2^20 a type), where the bit-by-bit loop was a third of its time.
+class ByteScatter {
+public:
+    explicit ByteScatter(const std::vector<int>& indices) : used_bytes_((indices.size() + 7) / 8), bytes_(used_bytes_) {
+        for (std::size_t k = 0; k < used_bytes_; ++k)
+            for (std::uint64_t v = 0; v < 256; ++v) bytes_[k][v] = scatter(v << (8 * k), indices);
+    }
+    [[nodiscard]] std::uint64_t operator()(std::uint64_t s) const {
+        std::uint64_t pattern = 0;
+        for (std::size_t k = 0; k < used_bytes_; ++k) pattern |= bytes_[k][(s >> (8 * k)) & 255U];
+        return pattern;
+    }
+
+private:
+    std::size_t used_bytes_;
+    std::vector<std::array<std::uint64_t, 256>> bytes_;
+};
+
 // Per leaf: its distinct outcomes over its private variables, a witness each (reused from
 // one shared assignment to the next).
 using Choices = std::array<std::vector<std::pair<int, std::uint64_t>>, kMaxLeaves>;
@@ -174,11 +193,12 @@ std::vector<std::uint64_t> distinct_outcome_tuples(const std::vector<LeafOutcome
     using Firsts = std::vector<std::pair<Tuple, std::uint64_t>>;
     std::vector<Firsts> chunks(static_cast<std::size_t>((bases + kChunk - 1) / kChunk));
     const LeafGather leaf_gather(leaves, variables);
+    const ByteScatter shared_scatter(split.shared);
     tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
         TupleSet seen;
         Choices choices;
         for (std::uint64_t s = c * kChunk; s < std::min(bases, (c + 1) * kChunk); ++s)
-            windows_over_base(leaves, split, leaf_gather, scatter(s, split.shared), choices,
+            windows_over_base(leaves, split, leaf_gather, shared_scatter(s), choices,
                               [&](const Tuple& tuple, std::uint64_t pattern) {
                                   if (seen.insert(tuple)) chunks[c].emplace_back(tuple, pattern);
                               });
