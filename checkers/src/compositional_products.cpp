@@ -149,6 +149,18 @@ using Choices = std::array<std::vector<std::pair<int, std::uint64_t>>, kMaxLeave
 // Calls emit(tuple, pattern) for every window whose shared variables are the base: a leaf's
 // private variables change only its own outcome, so the windows are the product of per-leaf
 // choices (one witness per distinct outcome).
+// The same when no leaf has a private variable (the types whose octants several leaves all
+// read): each base is one window, its tuple the leaves' outcomes at the base, without the
+// per-leaf choice lists and the odometer (half the enumeration's instructions).
+template <class Emit>
+void window_at_base(const std::vector<LeafOutcomes>& leaves, const LeafGather& leaf_gather, std::uint64_t base,
+                    Emit&& emit) {
+    Tuple tuple;
+    tuple.fill(-1);
+    for (std::size_t n = 0; n < leaves.size(); ++n) tuple[n] = leaves[n].table[leaf_gather(n, base)];
+    emit(tuple, base);
+}
+
 template <class Emit>
 void windows_over_base(const std::vector<LeafOutcomes>& leaves, const Split& split, const LeafGather& leaf_gather,
                        std::uint64_t base, Choices& choices, Emit&& emit) {
@@ -194,14 +206,18 @@ std::vector<std::uint64_t> distinct_outcome_tuples(const std::vector<LeafOutcome
     std::vector<Firsts> chunks(static_cast<std::size_t>((bases + kChunk - 1) / kChunk));
     const LeafGather leaf_gather(leaves, variables);
     const ByteScatter shared_scatter(split.shared);
+    const bool all_shared = std::all_of(split.private_bits.begin(), split.private_bits.end(),
+                                        [](const std::vector<int>& p) { return p.empty(); });
     tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
         TupleSet seen;
         Choices choices;
-        for (std::uint64_t s = c * kChunk; s < std::min(bases, (c + 1) * kChunk); ++s)
-            windows_over_base(leaves, split, leaf_gather, shared_scatter(s), choices,
-                              [&](const Tuple& tuple, std::uint64_t pattern) {
-                                  if (seen.insert(tuple)) chunks[c].emplace_back(tuple, pattern);
-                              });
+        const auto keep_first = [&](const Tuple& tuple, std::uint64_t pattern) {
+            if (seen.insert(tuple)) chunks[c].emplace_back(tuple, pattern);
+        };
+        for (std::uint64_t s = c * kChunk; s < std::min(bases, (c + 1) * kChunk); ++s) {
+            if (all_shared) window_at_base(leaves, leaf_gather, shared_scatter(s), keep_first);
+            else windows_over_base(leaves, split, leaf_gather, shared_scatter(s), choices, keep_first);
+        }
     });
     TupleSet seen;
     std::vector<std::uint64_t> witnesses;
