@@ -63,7 +63,8 @@ Congruence<Motion> congruence(const std::vector<Config>& all, const std::vector<
     return out;
 }
 
-inline std::map<std::string, std::size_t> elements_of(const ConfigurationComplex& built) {  // reads the header only
+// The placements only (not the complex): a member's ConfigurationParts header serves.
+inline std::map<std::string, std::size_t> elements_of(const ConfigurationComplex& built) {
     std::map<std::string, std::size_t> out;
     for (const PlacedLeaf& leaf : built.coarse_leaves) ++out[leaf.placement ? leaf.placement->element : "hex"];
     if (built.fine_hexes) out["fine"] = built.fine_hexes;
