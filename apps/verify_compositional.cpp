@@ -1,6 +1,11 @@
 // The compositional argument for `dualhex verify` (checkers/compositional.hpp): the reduction
 // lemma and every window of every parity type under the strong rule.
+#include <array>
+#include <optional>
 #include <sstream>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "dualhex/checkers/compositional.hpp"
 #include "dualhex/checkers/compositional_boundary.hpp"
@@ -74,28 +79,59 @@ CheckOutcome check_root_boundary() {
 // Weak balance (compositional_weak.hpp, proofs/README.md "Weak balance"): the weak rule's
 // computed reduction facts (reach, lemma, visible domain), the grid with four levels at a
 // point installed and verified (tested, not proved), and what a box window would read.
-CheckOutcome check_compositional_weak() {
-    const auto library = ElementLibrary::load_default();
-    const WeakLemmaResult r = check_weak_lemmas(WeakRule());
-    // The grid with levels m..m+3 at one point, for each of the 8 corners it can point to.
-    std::vector<int> at;
-    int spread_valid = 0;
-    std::string spread_failure;
-    for (int corner = 0; corner < 8; ++corner) {
+// The grid with levels m..m+3 at one point, for each of the 8 corners it can point to,
+// installed with the weak rule and verified: the corners in parallel, tallied in corner order.
+struct SpreadOutcome {
+    std::vector<int> at;  // the levels at the point (of the last corner)
+    int valid = 0;
+    std::string failure;  // the first corner's that failed
+};
+
+SpreadOutcome check_spread_grids(const ElementLibrary& library) {
+    std::array<std::vector<int>, 8> at;
+    std::array<std::optional<InstallVerification>, 8> verified;
+    tbb::parallel_for(0, 8, [&](int corner) {
         const LeafGrid spread = spread_three_grid(2, corner);
-        at = levels_at(spread, {2, 2, 2}, 2);
-        const InstallVerification v = verify_installation(install(spread, WeakRule(), library));
-        if (v.ok() && at.front() + 3 == at.back()) ++spread_valid;
-        else if (spread_failure.empty()) spread_failure = "corner " + std::to_string(corner) + ": " + v.summary();
+        at[static_cast<std::size_t>(corner)] = levels_at(spread, {2, 2, 2}, 2);
+        verified[static_cast<std::size_t>(corner)] = verify_installation(install(spread, WeakRule(), library));
+    });
+    SpreadOutcome out;
+    for (std::size_t corner = 0; corner < 8; ++corner) {
+        const InstallVerification& v = *verified[corner];
+        if (v.ok() && at[corner].front() + 3 == at[corner].back()) ++out.valid;
+        else if (out.failure.empty()) out.failure = "corner " + std::to_string(corner) + ": " + v.summary();
     }
-    const WeakStarInfluence influence = weak_star_influence(WeakRule(), library);
-    // W11: the one pair the star search cannot finish (parity 111, v = g, the 8 leaves of
-    // level m) is a corner pair, checked leaf by leaf and quadrant by quadrant.
+    out.at = at.back();
+    return out;
+}
+
+// W11: the one pair the star search cannot finish (parity 111, v = g, the 8 leaves of level
+// m) is a corner pair, checked leaf by leaf and quadrant by quadrant.
+WeakStarOptions odd_corner_pair() {
     WeakStarOptions odd;
     odd.parities = 0x80;
     odd.vertex = [](const LatticePoint& v) { return v == LatticePoint{}; };
     odd.corner_pairs = CornerPairs::Always;
-    const WeakStarCheck corner = run_weak_stars(WeakRule(), library, influence, odd);
+    return odd;
+}
+
+CheckOutcome check_compositional_weak() {
+    const auto library = ElementLibrary::load_default();
+    // Three independent computations, each short and mostly serial: side by side.
+    WeakLemmaResult r;
+    SpreadOutcome spread;
+    WeakStarInfluence influence;
+    std::vector<WeakStarReads> star_reads;
+    WeakStarCheck corner;
+    tbb::parallel_invoke([&] { r = check_weak_lemmas(WeakRule()); }, [&] { spread = check_spread_grids(library); },
+                         [&] {
+                             influence = weak_star_influence(WeakRule(), library);
+                             star_reads = weak_star_reads(influence);
+                             corner = run_weak_stars(WeakRule(), library, influence, odd_corner_pair());
+                         });
+    const std::vector<int>& at = spread.at;
+    const int spread_valid = spread.valid;
+    const std::string& spread_failure = spread.failure;
     const bool corner_ok = corner.pairs == 1 && corner.corner_pairs == 1 && corner.all_passed();
     CheckOutcome out;
     out.status = r.all_passed() && spread_valid == 8 && corner_ok ? CheckStatus::kPass : CheckStatus::kFail;
@@ -129,7 +165,7 @@ CheckOutcome check_compositional_weak() {
     for (const auto& [k, n] : influence.relevant_histogram) report << ' ' << k << ':' << n;
     report << '\n';
     nlohmann::json stars = nlohmann::json::array();
-    for (const auto& w : weak_star_reads(influence)) {
+    for (const auto& w : star_reads) {
         const std::string g = std::to_string(w.parity[0]) + std::to_string(w.parity[1]) + std::to_string(w.parity[2]);
         stars.push_back({{"g", g}, {"vertices", w.vertices}, {"configurations", w.configurations},
                          {"max_free", w.max_free}, {"max_shared", w.max_shared}, {"joint", w.joint}});

@@ -30,13 +30,14 @@ namespace dualhex::detail {
 /// What check_by_class needs of a family of n windows.
 ///   key(i)            -> std::optional<std::pair<Key, CubeSymmetry>> (nullopt: no key)
 ///   check(i, keep)    -> Outcome: the full check, building the window itself; if keep is not
-///                        null and the window was built, its complex is moved into *keep
-///   build(i)          -> Built (may throw)
+///                        null and the window was built, its complex is moved into *keep (a Kept)
+///   build(i)          -> Built (may throw): a member, built only as far as its form needs
 ///   check_built(i, b) -> Outcome: the full check of a built window
-///   form(b, s)        -> OrientedForm of b moved by s (empty: no form, members checked)
+///   form(b, s)        -> OrientedForm of b (a Built or a Kept) moved by s (empty: no form,
+///                        members checked)
 ///   ok(outcome)       -> bool
-template <class Key, class Built, class Outcome, class KeyOf, class Check, class Build, class CheckBuilt, class Form,
-          class Ok>
+template <class Key, class Built, class Outcome, class Kept = Built, class KeyOf, class Check, class Build,
+          class CheckBuilt, class Form, class Ok>
 std::vector<Outcome> check_by_class(std::size_t n, KeyOf&& key, Check&& check, Build&& build, CheckBuilt&& check_built,
                                     Form&& form, Ok&& ok) {
     std::vector<std::optional<std::pair<Key, CubeSymmetry>>> keys(n);
@@ -53,7 +54,7 @@ std::vector<Outcome> check_by_class(std::size_t n, KeyOf&& key, Check&& check, B
     std::vector<OrientedForm> forms(representative.size());
     tbb::parallel_for(std::size_t{0}, representative.size(), [&](std::size_t c) {
         const std::size_t i = representative[c];
-        Built kept{};
+        Kept kept{};
         out[i] = check(i, &kept);
         if (ok(out[i])) forms[c] = form(kept, keys[i]->second);  // empty: members get full checks
     });

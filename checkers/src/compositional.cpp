@@ -92,7 +92,27 @@ WindowType window_type(const std::array<int, 3>& parity, const TransitionRule& r
     }
     if (t.reads.size() > 63) throw std::length_error("compositional: more than 63 octants read by one window");
     t.read_of = OctantIndex(t.reads);
+    for (std::size_t n = 0; n < kLeaves; ++n) {
+        t.frame[n] = detail::coarse_leaf_context(t.leaves[n], [](const Index3&) { return false; });
+        for (int i = -2; i <= 1; ++i)
+            for (int j = -2; j <= 1; ++j)
+                for (int k = -2; k <= 1; ++k)
+                    t.context_reads[n][static_cast<std::size_t>(16 * (i + 2) + 4 * (j + 2) + (k + 2))] =
+                        static_cast<std::int8_t>(t.read_of(detail::world_octant(t.frame[n], {i, j, k})));
+    }
     return t;
+}
+
+LeafContext leaf_context(const WindowType& t, std::size_t n, std::uint64_t pattern) {
+    LeafContext ctx = t.frame[n];
+    const auto& reads = t.context_reads[n];
+    for (int i = -2; i <= 1; ++i)
+        for (int j = -2; j <= 1; ++j)
+            for (int k = -2; k <= 1; ++k) {
+                const int r = reads[static_cast<std::size_t>(16 * (i + 2) + 4 * (j + 2) + (k + 2))];
+                if (r >= 0 && ((pattern >> r) & 1U)) ctx.set_fine(i, j, k);
+            }
+    return ctx;
 }
 
 // Interned outcomes of a leaf: "fine", "hex", "E/<symmetry>", "error: ...".
@@ -104,11 +124,6 @@ private:
     std::unordered_map<std::string, int> ids_;
 };
 
-bool fine_in(const WindowType& t, std::uint64_t pattern, const Index3& o) {
-    const int i = t.read_of(o);
-    return i >= 0 && ((pattern >> i) & 1U);  // not read by the rule: its value cannot matter (reach)
-}
-
 // Per leaf: the outcome of each assignment of the leaf's own read octants (bit j: read_index[j]).
 std::vector<int> outcome_table(const WindowType& t, int n, const TransitionRule& rule, Outcomes& outcomes) {
     const auto& mine = t.read_index[static_cast<std::size_t>(n)];
@@ -117,13 +132,12 @@ std::vector<int> outcome_table(const WindowType& t, int n, const TransitionRule&
         std::uint64_t pattern = 0;
         for (std::size_t j = 0; j < mine.size(); ++j)
             if ((a >> j) & 1U) pattern |= std::uint64_t{1} << mine[j];
-        const LatticePoint& leaf = t.leaves[static_cast<std::size_t>(n)];
         std::string key;
         if ((pattern >> t.own[static_cast<std::size_t>(n)]) & 1U) {
             key = "fine";
         } else {
             try {
-                const auto p = rule.place(detail::coarse_leaf_context(leaf, [&](const Index3& o) { return fine_in(t, pattern, o); }));
+                const auto p = rule.place(leaf_context(t, static_cast<std::size_t>(n), pattern));
                 key = p ? p->element + "/" + std::to_string(p->symmetry.index()) : "hex";
             } catch (const std::exception& e) {
                 key = std::string("error: ") + e.what();
@@ -145,19 +159,25 @@ std::vector<std::uint64_t> distinct_windows(const WindowType& t, const Transitio
     return distinct_outcome_tuples(leaves, t.reads.size(), shared_count);
 }
 
-ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
-                                  detail::TemplateCache& cache) {
+// About a window's size (8 leaves, fine ones as 8 hexes each): only a reservation.
+constexpr std::size_t kWindowVertices = 128, kWindowFaces = 384, kWindowCells = 96;
+
+detail::ConfigurationParts window_parts(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
+                                        detail::TemplateCache& cache) {
     const std::int64_t U = cache.unit();
     const LatticePoint g{t.parity[0], t.parity[1], t.parity[2]};
     const auto wrap = [&](const LatticePoint& p) { return p - g * U; };
-    const auto fine = [&](const Index3& o) { return fine_in(t, pattern, o); };
     ConfigurationComplex out;
     out.unit = U;
     ComplexBuilder builder;
+    // Room for a typical window up front: grown from empty, the builder's arrays and welding
+    // tables were reallocated and rehashed several times for each of the 36,635 windows.
+    builder.reserve(kWindowVertices, kWindowFaces, kWindowCells);
     std::vector<VertexHandle> vs, loop;
     std::vector<HalfFaceHandle> hfs;
-    for (const LatticePoint& leaf : t.leaves) {
-        if (fine(octant_of(leaf))) {
+    for (std::size_t n = 0; n < kLeaves; ++n) {
+        const LatticePoint& leaf = t.leaves[n];
+        if ((pattern >> t.own[n]) & 1U) {  // its own octant is fine
             for (int c = 0; c < 8; ++c) {
                 const LatticePoint at = leaf * U + LatticePoint{c & 1, (c >> 1) & 1, (c >> 2) & 1} * (U / 2);
                 detail::emit(builder, cache.hex(U / 2), at, 1, wrap, vs, loop, hfs);
@@ -165,21 +185,24 @@ ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, co
             }
             continue;
         }
-        PlacedLeaf placed{leaf, detail::coarse_leaf_context(leaf, fine), std::nullopt};
+        PlacedLeaf placed{leaf, leaf_context(t, n, pattern), std::nullopt};
         placed.placement = detail::emit_rule_leaf(builder, cache, rule, placed.context,
                                                   placed.context.application_point * U, leaf * U, U, wrap, vs, loop, hfs);
         out.coarse_leaves.push_back(std::move(placed));
     }
-    out.complex = std::move(builder).build();
-    return out;
+    return detail::parts_of(std::move(out), std::move(builder));
+}
+
+ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
+                                  detail::TemplateCache& cache) {
+    return detail::complete(window_parts(t, pattern, rule, cache));
 }
 
 std::vector<PlacedLeaf> coarse_placements(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule) {
-    const auto fine = [&](const Index3& o) { return fine_in(t, pattern, o); };
     std::vector<PlacedLeaf> out;
-    for (const LatticePoint& leaf : t.leaves) {
-        if (fine(octant_of(leaf))) continue;
-        PlacedLeaf placed{leaf, detail::coarse_leaf_context(leaf, fine), std::nullopt};
+    for (std::size_t n = 0; n < kLeaves; ++n) {
+        if ((pattern >> t.own[n]) & 1U) continue;  // its own octant is fine
+        PlacedLeaf placed{t.leaves[n], leaf_context(t, n, pattern), std::nullopt};
         placed.placement = rule.place(placed.context);
         out.push_back(std::move(placed));
     }

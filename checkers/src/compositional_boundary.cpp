@@ -14,6 +14,7 @@
 
 #include "compositional_products.hpp"
 #include "compositional_windows.hpp"
+#include "configuration_parts.hpp"
 #include "class_check.hpp"
 #include "oriented_form.hpp"
 #include "window_classes.hpp"
@@ -137,9 +138,10 @@ std::vector<std::uint64_t> distinct_windows(const BoundaryType& t, const Transit
     return compositional_detail::distinct_outcome_tuples(leaves, t.vars.size(), shared);
 }
 
-// The inside leaves of B(g) for one pattern, translated so that g is the origin.
-CellComplex build_half_window(const BoundaryType& t, std::uint64_t pattern, const TransitionRule& rule,
-                              const OutsidePolicy& policy, detail::TemplateCache& cache) {
+// The inside leaves of B(g) for one pattern, translated so that g is the origin, as the
+// builder's parts (configuration_parts.hpp: a member proved an image needs no more).
+ComplexBuilder::Parts half_window_parts(const BoundaryType& t, std::uint64_t pattern, const TransitionRule& rule,
+                                        const OutsidePolicy& policy, detail::TemplateCache& cache) {
     const std::int64_t U = cache.unit();
     const LatticePoint g{t.parity[0], t.parity[1], t.parity[2]};
     const auto shift = [&](const LatticePoint& p) { return p - g * U; };
@@ -157,7 +159,12 @@ CellComplex build_half_window(const BoundaryType& t, std::uint64_t pattern, cons
         const LeafContext ctx = detail::coarse_leaf_context(leaf, Status{t, policy, pattern, leaf});
         (void)detail::emit_rule_leaf(builder, cache, rule, ctx, ctx.application_point * U, leaf * U, U, shift, vs, loop, hfs);
     }
-    return std::move(builder).build();
+    return std::move(builder).take_parts();
+}
+
+CellComplex build_half_window(const BoundaryType& t, std::uint64_t pattern, const TransitionRule& rule,
+                              const OutsidePolicy& policy, detail::TemplateCache& cache) {
+    return detail::complex_of(half_window_parts(t, pattern, rule, policy, cache));
 }
 
 std::string describe(const BoundaryType& t, std::uint64_t pattern) {
@@ -257,7 +264,7 @@ std::vector<PlacedLeaf> coarse_placements(const HalfWindow& w, const Context& ct
     return out;
 }
 
-detail::OrientedForm half_form(const CellComplex& k, const CubeSymmetry& s) {
+detail::OrientedForm half_form(const detail::FormArrays& k, const CubeSymmetry& s) {
     return detail::oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
 }
 
@@ -269,7 +276,7 @@ detail::OrientedForm half_form(const CellComplex& k, const CubeSymmetry& s) {
 // kept, and the vertex counts per kind are those of the images.
 std::vector<Outcome> check_by_class(const std::vector<HalfWindow>& windows, const ElementLibrary& library, const Context& ctx) {
     const detail::PlacementCodes codes(library);
-    return detail::check_by_class<detail::BoundaryWindowKey, CellComplex, Outcome>(
+    return detail::check_by_class<detail::BoundaryWindowKey, ComplexBuilder::Parts, Outcome, CellComplex>(
         windows.size(),
         [&](std::size_t i) -> std::optional<std::pair<detail::BoundaryWindowKey, CubeSymmetry>> {
             try {
@@ -280,9 +287,12 @@ std::vector<Outcome> check_by_class(const std::vector<HalfWindow>& windows, cons
             }
         },
         [&](std::size_t i, CellComplex* keep) { return full_check(windows[i], ctx, keep); },
-        [&](std::size_t i) { return build_half_window(*windows[i].type, windows[i].pattern, ctx.rule, ctx.policy, ctx.caches.local()); },
-        [&](std::size_t i, const CellComplex& cx) { return check_half_window(cx, ctx.caches.local().unit(), windows[i].type->sides); },
-        half_form, [](const Outcome& o) { return o.ok; });
+        [&](std::size_t i) { return half_window_parts(*windows[i].type, windows[i].pattern, ctx.rule, ctx.policy, ctx.caches.local()); },
+        [&](std::size_t i, ComplexBuilder::Parts parts) {
+            return check_half_window(detail::complex_of(std::move(parts)), ctx.caches.local().unit(), windows[i].type->sides);
+        },
+        [](const auto& b, const CubeSymmetry& s) { return half_form(detail::FormArrays(b), s); },
+        [](const Outcome& o) { return o.ok; });
 }
 
 }  // namespace

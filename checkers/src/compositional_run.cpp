@@ -41,7 +41,7 @@ Outcome outcome_of(const ConfigurationReport& r) { return {r.ok(), r.checked_ver
 
 using detail::OrientedForm;
 
-OrientedForm window_form(const CellComplex& k, const CubeSymmetry& s) {
+OrientedForm window_form(const detail::FormArrays& k, const CubeSymmetry& s) {
     return detail::oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
 }
 
@@ -57,11 +57,12 @@ std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const Tr
     const detail::PlacementCodes codes(library);
     // Work units: each window's key, each representative's full check or member's comparison.
     ProgressCounter counter(progress, "windows", 2 * windows.size());
-    const auto build = [&](std::size_t i) { return build_window(*windows[i].type, windows[i].pattern, rule, caches.local()); };
-    const auto check_built = [&](std::size_t, ConfigurationComplex built) {
-        return outcome_of(detail::check_window(0, caches.local().unit(), [&] { return std::move(built); }));
+    // A member is built as parts (no edges): its form is all it needs unless it is no image.
+    const auto build = [&](std::size_t i) { return window_parts(*windows[i].type, windows[i].pattern, rule, caches.local()); };
+    const auto check_built = [&](std::size_t, detail::ConfigurationParts built) {
+        return outcome_of(detail::check_window(0, caches.local().unit(), [&] { return detail::complete(std::move(built)); }));
     };
-    return detail::check_by_class<detail::WindowKey, ConfigurationComplex, Outcome>(
+    return detail::check_by_class<detail::WindowKey, detail::ConfigurationParts, Outcome, ConfigurationComplex>(
         windows.size(),
         [&](std::size_t i) -> std::optional<std::pair<detail::WindowKey, CubeSymmetry>> {
             counter.add();
@@ -74,7 +75,9 @@ std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const Tr
         [&](std::size_t i, ConfigurationComplex* keep) {
             counter.add();
             ConfigurationComplex built;
-            const Outcome o = outcome_of(detail::check_window(0, caches.local().unit(), [&] { return built = build(i); }));
+            const Outcome o = outcome_of(detail::check_window(0, caches.local().unit(), [&] {
+                return built = build_window(*windows[i].type, windows[i].pattern, rule, caches.local());
+            }));
             if (keep) *keep = std::move(built);
             return o;
         },
@@ -82,7 +85,7 @@ std::vector<Outcome> check_by_class(const std::vector<Window>& windows, const Tr
             counter.add();
             return build(i);
         },
-        check_built, [](const ConfigurationComplex& b, const CubeSymmetry& s) { return window_form(b.complex, s); },
+        check_built, [](const auto& b, const CubeSymmetry& s) { return window_form(detail::form_source(b), s); },
         [](const Outcome& o) { return o.ok; });
 }
 

@@ -9,6 +9,7 @@
 
 #include "dualhex/checkers/compositional.hpp"
 #include "dualhex/install/element_templates.hpp"
+#include "configuration_parts.hpp"
 
 namespace dualhex::compositional_detail {
 
@@ -45,7 +46,18 @@ struct WindowType {
     std::array<std::vector<int>, kLeaves> read_index;  // per leaf: indices into reads
     std::array<int, kLeaves> own{};            // per leaf: its own octant's index
     OctantIndex read_of;                       // reads' indices by octant
+    // Per leaf: its context with no octant fine (application point, direction), and per
+    // local octant cube (i, j, k) of that context, entry 16(i+2) + 4(j+2) + (k+2), the
+    // cube's index in reads or -1 (not read by the rule, so its value cannot matter (reach):
+    // coarse here). Every window of the type has
+    // these leaves, so their contexts are looked up once here, not for each window.
+    std::array<LeafContext, kLeaves> frame;
+    std::array<std::array<std::int8_t, 64>, kLeaves> context_reads{};
 };
+
+/// The context of leaf n of the window of type t with this pattern (bit i: reads[i] fine):
+/// detail::coarse_leaf_context of the leaf, from the type's tables.
+[[nodiscard]] LeafContext leaf_context(const WindowType& t, std::size_t n, std::uint64_t pattern);
 
 [[nodiscard]] std::vector<int> reach_bits(const TransitionRule& rule);
 /// The local octant (each in {-2..1}) of neighbourhood bit b.
@@ -58,6 +70,10 @@ void check_lemma(const TransitionRule& rule, CompositionalResult& result);
 /// B(g) for one pattern, translated so that g is the origin: [-U, U]^3.
 [[nodiscard]] ConfigurationComplex build_window(const WindowType& t, std::uint64_t pattern, const TransitionRule& rule,
                                                 detail::TemplateCache& cache);
+/// The same before its CellComplex is made (configuration_parts.hpp): build_window is
+/// complete() of it.
+[[nodiscard]] detail::ConfigurationParts window_parts(const WindowType& t, std::uint64_t pattern,
+                                                      const TransitionRule& rule, detail::TemplateCache& cache);
 /// The coarse leaves of that window with what the rule places there (build_window's
 /// coarse_leaves, without building). Throws what the rule throws.
 [[nodiscard]] std::vector<PlacedLeaf> coarse_placements(const WindowType& t, std::uint64_t pattern,

@@ -18,12 +18,14 @@
 // threads.
 #include <algorithm>
 #include <map>
+#include <type_traits>
 #include <vector>
 
 #include <tbb/parallel_for.h>
 
 #include "dualhex/checkers/configuration_report.hpp"
 #include "dualhex/checkers/torus_classes.hpp"
+#include "configuration_parts.hpp"
 #include "oriented_form.hpp"
 
 namespace dualhex::detail {
@@ -61,6 +63,7 @@ Congruence<Motion> congruence(const std::vector<Config>& all, const std::vector<
     return out;
 }
 
+// The placements only (not the complex): a member's ConfigurationParts header serves.
 inline std::map<std::string, std::size_t> elements_of(const ConfigurationComplex& built) {
     std::map<std::string, std::size_t> out;
     for (const PlacedLeaf& leaf : built.coarse_leaves) ++out[leaf.placement ? leaf.placement->element : "hex"];
@@ -79,7 +82,8 @@ std::vector<OrientedForm> stabilizer_forms(const CellComplex& k, const std::vect
 }
 
 /// Every configuration's report: `check(i, built)` checks configuration i keeping its
-/// complex in `built`, `build(i)` only builds it (may throw), `form(complex, motion)` is the
+/// complex in `built`, `build(i)` only builds it (may throw; a ConfigurationComplex, or its
+/// ConfigurationParts, which members need no more of), `form(arrays, motion)` is the
 /// complex's oriented form moved by the motion.
 template <class Motion, class Check, class Build, class Form>
 std::vector<ConfigurationReport> check_by_congruence(const Congruence<Motion>& classes, Check&& check, Build&& build,
@@ -94,20 +98,21 @@ std::vector<ConfigurationReport> check_by_congruence(const Congruence<Motion>& c
         if (out[i].ok()) forms[i] = form(kept[i].complex, Motion{});  // empty: members get full checks
     });
     // A proved member: its representative's report, with its own mask and placements.
-    const auto carry = [&](std::size_t i, const ConfigurationComplex& built) {
+    const auto carry = [&](std::size_t i, const auto& built) {
         out[i] = out[classes.representative[i]];
-        out[i].mask = built.mask;
-        out[i].elements = elements_of(built);
+        out[i].mask = header_of(built).mask;
+        out[i].elements = elements_of(header_of(built));
     };
-    std::vector<ConfigurationComplex> pending(n);  // members whose m0-form differs
+    using Built = std::decay_t<decltype(build(std::size_t{0}))>;
+    std::vector<Built> pending(n);  // members whose m0-form differs
     std::vector<char> needs_stabilizer(n, 0);      // per representative
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
         const std::size_t rep = classes.representative[i];
         if (rep == i) return;
         if (out[rep].ok() && !forms[rep].empty()) {
             try {
-                ConfigurationComplex built = build(i);
-                OrientedForm f = form(built.complex, inverse_of(classes.motion[i]));
+                Built built = build(i);
+                OrientedForm f = form(form_source(built), inverse_of(classes.motion[i]));
                 if (f == forms[rep]) return carry(i, built);
                 if (!f.empty() && classes.stabilizer[rep].size() > 1) {
                     forms[i] = std::move(f);
@@ -137,10 +142,10 @@ std::vector<ConfigurationReport> check_by_congruence(const Congruence<Motion>& c
 
 /// The oriented form moved by a torus motion (positions reduced modulo the period) or by a
 /// symmetry about the origin.
-inline OrientedForm torus_form(const CellComplex& k, const TorusMotion& m, std::int64_t octant) {
+inline OrientedForm torus_form(const FormArrays& k, const TorusMotion& m, std::int64_t octant) {
     return oriented_form(k, [&](const LatticePoint& p) { return m.apply(p, octant); }, m.symmetry.determinant() < 0);
 }
-inline OrientedForm symmetric_form(const CellComplex& k, const CubeSymmetry& s) {
+inline OrientedForm symmetric_form(const FormArrays& k, const CubeSymmetry& s) {
     return oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
 }
 

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <ostream>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "dualhex/checkers/cube_window.hpp"
 #include "dualhex/checkers/periodic_configuration.hpp"
 #include "dualhex/grid/configurations.hpp"
@@ -63,21 +65,28 @@ ExhaustiveResult run_exhaustive(const TransitionRule& rule, const ElementLibrary
     std::vector<std::uint8_t> masks(kConfigurationCount);
     for (int m = 0; m < kConfigurationCount; ++m) masks[static_cast<std::size_t>(m)] = static_cast<std::uint8_t>(m);
     const std::int64_t U = detail::common_unit(library);
+    // One template cache per thread for every build (the templates do not depend on who
+    // placed them first), not one per configuration.
+    tbb::enumerable_thread_specific<detail::TemplateCache> caches([&] { return detail::TemplateCache(library); });
     res.periodic = detail::check_by_congruence(
         detail::congruence(masks, torus_motions(), torus_image),
         [&](std::size_t m, ConfigurationComplex& built) {
-            return detail::check(masks[m], [&] { return built = build_periodic_configuration(masks[m], rule, library); },
+            return detail::check(masks[m], [&] {
+                                     return built = detail::complete(detail::periodic_configuration_parts(masks[m], rule, caches.local()));
+                                 },
                                  [](const LatticePoint&) { return true; },
                                  [](const CellComplex&, std::span<const VertexHandle>) { return false; });
         },
-        [&](std::size_t m) { return build_periodic_configuration(masks[m], rule, library); },
-        [&](const CellComplex& k, const TorusMotion& motion) { return detail::torus_form(k, motion, 2 * U); });
+        [&](std::size_t m) { return detail::periodic_configuration_parts(masks[m], rule, caches.local()); },
+        [&](const detail::FormArrays& k, const TorusMotion& motion) { return detail::torus_form(k, motion, 2 * U); });
     res.window = detail::check_by_congruence(
         detail::congruence(masks, detail::all_symmetries(), window_image),
         [&](std::size_t m, ConfigurationComplex& built) {
-            return detail::check_window(masks[m], 2 * U, [&] { return built = build_cube_window(masks[m], rule, library); });
+            return detail::check_window(masks[m], 2 * U, [&] {
+                return built = detail::complete(detail::cube_window_parts(masks[m], rule, caches.local()));
+            });
         },
-        [&](std::size_t m) { return build_cube_window(masks[m], rule, library); }, detail::symmetric_form);
+        [&](std::size_t m) { return detail::cube_window_parts(masks[m], rule, caches.local()); }, detail::symmetric_form);
     for (int m = 0; m < kConfigurationCount; ++m) {
         const auto mask = static_cast<std::uint8_t>(m);
         const ConfigurationReport& p = res.periodic[static_cast<std::size_t>(m)];

@@ -17,10 +17,39 @@
 #include <vector>
 
 #include "dualhex/topology/cell_complex.hpp"
+#include "dualhex/topology/complex_builder.hpp"
 
 namespace dualhex::detail {
 
 using OrientedForm = std::vector<std::int64_t>;
+
+/// What a form reads of a complex: its vertices, face loops and cells' half-faces, from a
+/// CellComplex or straight from a builder's parts. A member that is only to be proved an
+/// image of its representative needs no CellComplex (whose constructor derives the edges,
+/// which the form does not read; configuration_parts.hpp).
+struct FormArrays {
+    std::span<const LatticePoint> positions;
+    std::span<const std::uint32_t> face_offsets;
+    std::span<const VertexHandle> face_loops;
+    std::span<const std::uint32_t> cell_offsets;
+    std::span<const HalfFaceHandle> cell_halffaces;
+
+    FormArrays(const CellComplex& k)  // NOLINT(google-explicit-constructor): every complex has a form
+        : positions(k.positions()), face_offsets(k.face_offsets()), face_loops(k.face_loops()),
+          cell_offsets(k.cell_offsets()), cell_halffaces(k.all_cell_halffaces()) {}
+    FormArrays(const ComplexBuilder::Parts& p)  // NOLINT(google-explicit-constructor)
+        : positions(p.positions), face_offsets(p.face_offsets), face_loops(p.face_loops), cell_offsets(p.cell_offsets),
+          cell_halffaces(p.cell_halffaces) {}
+
+    [[nodiscard]] std::size_t n_faces() const { return face_offsets.size() - 1; }
+    [[nodiscard]] std::size_t n_cells() const { return cell_offsets.size() - 1; }
+    [[nodiscard]] std::span<const VertexHandle> face_vertices(FaceHandle f) const {
+        return face_loops.subspan(face_offsets[f.index()], face_offsets[f.index() + 1] - face_offsets[f.index()]);
+    }
+    [[nodiscard]] std::span<const HalfFaceHandle> cell_halffaces_of(std::size_t c) const {
+        return cell_halffaces.subspan(cell_offsets[c], cell_offsets[c + 1] - cell_offsets[c]);
+    }
+};
 
 namespace oriented_form_detail {
 
@@ -54,7 +83,7 @@ inline void append(std::vector<std::int64_t>& out, const std::vector<std::int64_
 
 /// `move(p)`: the moved lattice point; `reflect`: the motion reverses orientation.
 template <class Move>
-[[nodiscard]] OrientedForm oriented_form(const CellComplex& k, Move&& move, bool reflect) {
+[[nodiscard]] OrientedForm oriented_form(const FormArrays& k, Move&& move, bool reflect) {
     using namespace oriented_form_detail;
     OrientedForm out;
     // Scratch kept per thread: forms are computed for tens of thousands of small complexes
@@ -66,8 +95,8 @@ template <class Move>
     thread_local Scratch scratch;
     std::vector<std::int64_t>& moved = scratch.moved;  // per vertex, packed once: a vertex is on many loops
     moved.clear();
-    moved.reserve(k.n_vertices());
-    for (const LatticePoint& p : k.positions()) {
+    moved.reserve(k.positions.size());
+    for (const LatticePoint& p : k.positions) {
         const LatticePoint q = move(p);
         if (!packable(q)) return {};
         moved.push_back(pack(q));
@@ -86,11 +115,11 @@ template <class Move>
     cells_buffer.clear();
     cells.clear();
     // An upper bound: every face is on at most two cells.
-    out.reserve(2 + points.size() + k.n_cells() + 2 * (k.n_faces() + k.face_loops().size()));
+    out.reserve(2 + points.size() + k.n_cells() + 2 * (k.n_faces() + k.face_loops.size()));
     for (std::size_t c = 0; c < k.n_cells(); ++c) {
         faces_buffer.clear();
         faces.clear();
-        for (HalfFaceHandle h : k.cell_halffaces(CellHandle(c))) {
+        for (HalfFaceHandle h : k.cell_halffaces_of(c)) {
             const auto stored = k.face_vertices(h.face());
             loop.clear();
             for (VertexHandle v : stored) loop.push_back(moved[v.index()]);

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "dualhex/checkers/periodic_configuration.hpp"
@@ -85,23 +86,31 @@ WeakExhaustiveResult run_weak_exhaustive(const TransitionRule& rule, const Eleme
         return levels;
     };
     const std::int64_t octant = 4 * detail::common_unit(library);
+    // One template cache per thread for every build (the templates do not depend on who
+    // placed them first): a cache per configuration re-made each template it used.
+    tbb::enumerable_thread_specific<detail::TemplateCache> caches([&] { return detail::TemplateCache(library); });
     // Tori: classes under the 384 motions of the torus; windows: under the 48 symmetries.
     const auto moved = [](const LevelAssignment& lv, const auto& m) { return moved_by(lv, m); };
     const std::vector<ConfigurationReport> tori = detail::check_by_congruence(
         detail::congruence(configurations, torus_motions(), moved),
         [&](std::size_t i, ConfigurationComplex& built) {
-            return detail::check(0, [&] { return built = build_periodic_levels(torus_levels(configurations[i]), 2, rule, library); },
+            return detail::check(0, [&] {
+                                     return built = detail::complete(detail::periodic_levels_parts(
+                                                torus_levels(configurations[i]), 2, rule, caches.local()));
+                                 },
                                  [](const LatticePoint&) { return true; },
                                  [](const CellComplex&, std::span<const VertexHandle>) { return false; });
         },
-        [&](std::size_t i) { return build_periodic_levels(torus_levels(configurations[i]), 2, rule, library); },
-        [&](const CellComplex& k, const TorusMotion& m) { return detail::torus_form(k, m, octant); });
+        [&](std::size_t i) { return detail::periodic_levels_parts(torus_levels(configurations[i]), 2, rule, caches.local()); },
+        [&](const detail::FormArrays& k, const TorusMotion& m) { return detail::torus_form(k, m, octant); });
     const std::vector<ConfigurationReport> windows = detail::check_by_congruence(
         detail::congruence(configurations, detail::all_symmetries(), moved),
         [&](std::size_t i, ConfigurationComplex& built) {
-            return detail::check_window(0, octant, [&] { return built = build_window_levels(as_levels(configurations[i]), rule, library); });
+            return detail::check_window(0, octant, [&] {
+                return built = detail::complete(detail::window_levels_parts(as_levels(configurations[i]), rule, caches.local()));
+            });
         },
-        [&](std::size_t i) { return build_window_levels(as_levels(configurations[i]), rule, library); },
+        [&](std::size_t i) { return detail::window_levels_parts(as_levels(configurations[i]), rule, caches.local()); },
         detail::symmetric_form);
 
     std::set<LevelAssignment> classes, three;

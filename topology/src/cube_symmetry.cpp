@@ -56,12 +56,6 @@ CubeSymmetry CubeSymmetry::inverse() const {
     return {perm, sign};
 }
 
-LatticePoint CubeSymmetry::apply(const LatticePoint& p) const {
-    LatticePoint q;
-    for (int i = 0; i < 3; ++i) q[i] = sign_[i] * p[perm_[i]];
-    return q;
-}
-
 LatticePoint CubeSymmetry::apply_about(const LatticePoint& p, std::int64_t extent) const {
     LatticePoint q;
     for (int i = 0; i < 3; ++i) q[i] = sign_[i] > 0 ? p[perm_[i]] : extent - p[perm_[i]];
