@@ -111,6 +111,41 @@ TEST(WeakRootStars, WrongRulesAndPoliciesAreCaught) {
     EXPECT_EQ(all_fine.stars, (std::array<long, 3>{3924, 288, 8}));
 }
 
+// Not every policy that is a function of the outside cell will do (AnyOutside: each outside
+// cell a free status, no implication into or out of it; proofs/README.md W13 (g)): its stars
+// contain those of Coarse (every outside cell 0) and of reading every outside cell fine
+// (every one 1), which pass, but two inside leaves can then read two outside cells of
+// different values and disagree across their common face: stars fail (pinned). So W13's
+// result is for Coarse and Mirror, as stated, not for any policy.
+TEST(WeakRootStars, AFreeOutsideCellBreaksTheWeakRule) {
+    std::mutex mutex;
+    const auto star_set = [&](BoundaryPolicy policy, const WeakRootStarOptions& base, WeakRootStarCheck& r) {
+        std::set<std::string> out;
+        WeakRootStarOptions o = base;
+        o.stars = [&](const WeakRootStar& s) {
+            const std::lock_guard lock(mutex);
+            out.insert(key(s));
+        };
+        r = run_weak_root_stars(WeakRule(), library(), weak_influence(), policy, o);
+        return out;
+    };
+    WeakRootStarCheck any, coarse, fine;
+    WeakRootStarOptions all_fine;
+    all_fine.outside_fine_for = [](int, const std::array<std::int64_t, 3>&) { return true; };
+    const auto any_set = star_set(BoundaryPolicy::AnyOutside, {}, any);
+    const auto coarse_set = star_set(BoundaryPolicy::Coarse, {}, coarse);
+    const auto fine_set = star_set(BoundaryPolicy::Coarse, all_fine, fine);
+    print(any);
+    EXPECT_EQ(any.pairs, coarse.pairs);
+    EXPECT_TRUE(std::includes(any_set.begin(), any_set.end(), coarse_set.begin(), coarse_set.end()));
+    EXPECT_TRUE(std::includes(any_set.begin(), any_set.end(), fine_set.begin(), fine_set.end()));
+    EXPECT_TRUE(coarse.all_passed());
+    EXPECT_TRUE(fine.all_passed());
+    EXPECT_EQ(any.stars, (std::array<long, 3>{48966, 7668, 320}));
+    EXPECT_EQ(any.failed, (std::array<long, 3>{21552, 3360, 0}));
+    EXPECT_FALSE(any.all_passed());
+}
+
 // The model against real installations. A star's geometry: its root sides and its cells at
 // v (each as its outward loops, each loop from its smallest point), v at the origin, in the
 // enumeration's units (a level-m cell is 8U); empty if a point is off that lattice.

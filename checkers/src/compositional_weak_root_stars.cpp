@@ -112,7 +112,7 @@ struct Run {
     const TransitionRule& rule;
     const WeakStarInfluence& inf;
     const WeakRootStarOptions& options;
-    const bool mirror;
+    const bool mirror, any_outside;
     std::map<LatticePoint, std::size_t> index;
     PieceCubes cubes;
     std::atomic<long> failed{0};
@@ -128,9 +128,10 @@ struct Run {
         if (mirror) {  // Ĝ: its 8 leaves force; a status is one with its mirror images
             model.canonical = [sides](const Status& x) { return mirror_representative(sides, x); };
             forced.emplace(leaves);
-        } else {  // G: the inside leaves force; outside cells are not fine, nothing implies into them
+        } else {  // G: the inside leaves force; outside cells are not fine (Coarse) or free (any
+                  // function of the cell), and nothing implies into or out of them
             model.outside = [sides](const Status& x) { return outside(sides, x.second); };
-            forced.emplace(inside, model.outside);
+            forced.emplace(inside, model.outside, any_outside);
             if (options.outside_fine_for)
                 model.read = [this, sides](const Status& x, const weak_stars::Leaf& reader) -> std::optional<bool> {
                     if (!outside(sides, x.second)) return std::nullopt;
@@ -200,11 +201,12 @@ void add(WeakRootStarCheck& to, WeakRootStarCheck& from) {
 
 WeakRootStarCheck run_weak_root_stars(const TransitionRule& rule, const ElementLibrary& library, const WeakStarInfluence& inf,
                                       BoundaryPolicy policy, const WeakRootStarOptions& options) {
-    if (policy == BoundaryPolicy::AnyOutside) throw std::invalid_argument("run_weak_root_stars: Coarse or Mirror only");
     WeakRootStarCheck result;
     result.rule = rule.name();
     result.policy = to_string(policy);
-    Run run{rule, inf, options, policy == BoundaryPolicy::Mirror, {}, piece_cubes(inf)};
+    if (policy == BoundaryPolicy::AnyOutside && options.outside_fine_for)
+        throw std::invalid_argument("run_weak_root_stars: outside_fine_for is a variant of Coarse");
+    Run run{rule, inf, options, policy == BoundaryPolicy::Mirror, policy == BoundaryPolicy::AnyOutside, {}, piece_cubes(inf)};
     for (std::size_t q = 0; q < inf.positions.size(); ++q) run.index[inf.positions[q].position] = q;
     const std::int64_t E = cell_size(inf.unit, 0);
     const std::vector<Type> all_types = types(options.planes);

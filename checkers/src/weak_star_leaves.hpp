@@ -139,8 +139,10 @@ public:
     /// On the root surface under `Coarse` (proofs/README.md W13): only the inside leaves
     /// exist, a cell `outside` the root reads not fine, and no implication into it holds, so
     /// the last clause does not look at it.
-    Forcing(std::vector<Leaf> leaves, std::function<bool(const Status&)> outside)
-        : leaves_(std::move(leaves)), finer_(2), outside_(std::move(outside)) {}
+    /// `outside_free`: the policy is any function of the outside cell (proofs/README.md W13
+    /// (g)), so an outside cell is forced neither way: a free status of its own.
+    Forcing(std::vector<Leaf> leaves, std::function<bool(const Status&)> outside, bool outside_free = false)
+        : leaves_(std::move(leaves)), finer_(2), outside_(std::move(outside)), outside_free_(outside_free) {}
     std::optional<bool> operator()(const Status& x) {
         if (const auto it = memo_.find(x); it != memo_.end()) return it->second;
         const std::optional<bool> f = compute(x);
@@ -151,7 +153,7 @@ public:
 private:
     std::optional<bool> compute(const Status& x) {
         const auto& [k, cell] = x;
-        if (outside_ && outside_(x)) return false;
+        if (outside_ && outside_(x)) return outside_free_ ? std::nullopt : std::optional<bool>(false);
         for (const Leaf& leaf : leaves_) {
             if (leaf.level >= k + 1 && ancestor(leaf.cell, leaf.level - k) == cell) return leaf.level >= k + finer_;
             if (leaf.level <= k && ancestor(cell, k - leaf.level) == leaf.cell) return false;
@@ -167,6 +169,7 @@ private:
     const std::vector<Leaf> leaves_;
     const int finer_;
     const std::function<bool(const Status&)> outside_;
+    const bool outside_free_ = false;
     std::map<Status, std::optional<bool>> memo_;
 };
 

@@ -42,7 +42,8 @@ struct StatusModel {
     /// `Mirror`: x's representative among its images under the reflections across the root
     /// planes through v (the mirrored grid is symmetric under them, so they are one status).
     std::function<Status(const Status&)> canonical;
-    /// `Coarse`: x lies outside the root: it reads not fine and no implication into it holds.
+    /// `Coarse`: x lies outside the root: it reads not fine and no implication into it holds
+    /// (nor out of it: the policy's value is no fact about a grid cell).
     std::function<bool(const Status&)> outside;
     /// A wrong policy (tests): what x reads to one leaf if not the forced value (readers may
     /// then disagree about a cell).
@@ -58,6 +59,7 @@ inline std::vector<std::pair<Status, Status>> implications(const std::map<Status
                                                            const StatusModel& model = {}) {
     std::vector<std::pair<Status, Status>> out;
     for (const auto& [x, who] : readers) {
+        if (model.out(x)) continue;  // an outside cell is the policy's: it implies nothing
         std::set<Status> reached, frontier{x};
         while (!frontier.empty()) {
             std::set<Status> next;

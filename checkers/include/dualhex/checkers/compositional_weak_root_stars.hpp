@@ -61,7 +61,10 @@ struct WeakRootStarOptions {
     std::function<void(const WeakRootStar&)> stars;
 };
 
-/// Runs it for `Coarse` or `Mirror` (oneTBB over the candidate vertices).
+/// Runs it for `Coarse`, `Mirror` or `AnyOutside` (the inside leaves as under `Coarse`, but
+/// each outside cell a free status of its own: every policy that is a function of the
+/// outside cell; the weak rule fails there, proofs/README.md W13 (g)) (oneTBB over the
+/// candidate vertices).
 [[nodiscard]] WeakRootStarCheck run_weak_root_stars(const TransitionRule& rule, const ElementLibrary& library,
                                                     const WeakStarInfluence& influence, BoundaryPolicy policy,
                                                     const WeakRootStarOptions& options = {});
