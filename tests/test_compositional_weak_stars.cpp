@@ -18,20 +18,14 @@
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/weak_rule.hpp"
+#include "test_weak_star_fixture.hpp"
 #include "test_wrong_rules.hpp"
 
 namespace dualhex {
 namespace {
 
-const ElementLibrary& library() {
-    static const ElementLibrary lib = ElementLibrary::load_default();
-    return lib;
-}
-
-const WeakStarInfluence& weak_influence() {
-    static const WeakStarInfluence r = weak_star_influence(WeakRule(), library());
-    return r;
-}
+using test::library;
+using test::weak_influence;
 
 TEST(WeakStars, InfluenceOverTheVisibleDomain) {
     const WeakStarInfluence& r = weak_influence();

@@ -15,7 +15,7 @@
 #include "dualhex/install/element_templates.hpp"
 #include "dualhex/install/library.hpp"
 #include "dualhex/schemes/signature_rule.hpp"
-#include "dualhex/topology/transform.hpp"
+#include "test_root_corner.hpp"
 
 namespace dualhex {
 namespace {
@@ -115,15 +115,8 @@ TEST(RootBoundaryGrids, EveryRootSurfaceVertexPasses) {
             // each root corner moved to the origin, the root into the positive octant (a
             // reflection keeps cells outward, transform.hpp): every face, edge and corner
             for (int corner = 0; corner < 8; ++corner) {
-                std::array<int, 3> sign{};
-                LatticePoint t{0, 0, 0};
-                for (int a = 0; a < 3; ++a) {
-                    const bool high = (corner >> a) & 1;
-                    sign[static_cast<std::size_t>(a)] = high ? -1 : 1;
-                    t[a] = high ? n : 0;
-                }
                 const BoundaryVertexReport rep =
-                    check_boundary_vertices(transform(r.complex, CubeSymmetry({0, 1, 2}, sign), t), n, {1, 1, 1});
+                    check_boundary_vertices(test::root_corner_at_origin(r.complex, n, corner), n, {1, 1, 1});
                 EXPECT_TRUE(rep.ok()) << (rep.failures.empty() ? "" : rep.failures.front());
                 EXPECT_GT(rep.checked, 0u);
             }

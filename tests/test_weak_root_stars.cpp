@@ -17,23 +17,17 @@
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/install.hpp"
 #include "dualhex/topology/incidence.hpp"
-#include "dualhex/topology/transform.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/weak_rule.hpp"
+#include "test_root_corner.hpp"
+#include "test_weak_star_fixture.hpp"
 #include "test_wrong_rules.hpp"
 
 namespace dualhex {
 namespace {
 
-const ElementLibrary& library() {
-    static const ElementLibrary lib = ElementLibrary::load_default();
-    return lib;
-}
-
-const WeakStarInfluence& weak_influence() {
-    static const WeakStarInfluence r = weak_star_influence(WeakRule(), library());
-    return r;
-}
+using test::library;
+using test::weak_influence;
 
 void print(const WeakRootStarCheck& r) {
     std::printf("%s %s: types %ld/%ld/%ld pairs %ld/%ld/%ld stars %ld/%ld/%ld empty %ld/%ld/%ld passed %ld/%ld/%ld failed %ld/%ld/%ld nodes %ld max_free %d\n",
@@ -233,17 +227,9 @@ RealStars real_surface_stars(OutsideRoot policy, const std::set<std::string>& en
             if (enumerated.count(key)) ++out.found, out.distinct.insert(key);
             else if (out.missing++ == 0) out.first_missing = key;
         }
-        for (int corner = 0; corner < 8; ++corner) {  // B1-B5 on the whole installation
-            std::array<int, 3> sign{};
-            LatticePoint t{0, 0, 0};
-            for (int a = 0; a < 3; ++a) {
-                const bool high = (corner >> a) & 1;
-                sign[static_cast<std::size_t>(a)] = high ? -1 : 1;
-                t[a] = high ? n : 0;
-            }
+        for (int corner = 0; corner < 8; ++corner)  // B1-B5 on the whole installation
             out.boundary_failures += static_cast<long>(
-                check_boundary_vertices(transform(r.complex, CubeSymmetry({0, 1, 2}, sign), t), n, {1, 1, 1}).failures.size());
-        }
+                check_boundary_vertices(test::root_corner_at_origin(r.complex, n, corner), n, {1, 1, 1}).failures.size());
     }
     return out;
 }

@@ -70,11 +70,13 @@ int half_axis(const CellComplex& cx, EdgeHandle e, VertexHandle v, const Sign& s
     return -1;
 }
 
-std::string validation_defect(const CellComplex& cx) {
+// Checks (1)-(2) of validate (cells, conformity); the first violation, or nothing.
+std::optional<std::string> validation_defect(const CellComplex& cx) {
     ValidationOptions o;
     o.check_interior = false;
     const ValidationReport r = validate(cx, o);
-    return r.ok() ? std::string{} : std::string("validation: ") + to_string(r.violations.front().kind) + " " + r.violations.front().message;
+    if (r.ok()) return std::nullopt;
+    return std::string("validation: ") + to_string(r.violations.front().kind) + " " + r.violations.front().message;
 }
 
 }  // namespace
@@ -107,12 +109,12 @@ std::optional<std::string> corner_piece_defect(const CellComplex& cx, const std:
     LatticePoint s{};
     for (std::size_t q : cell_vertices) s = s + cx.position(VertexHandle(q));
     if (zeros(s) != 0) return std::string("a flat cell");
-    if (auto d = validation_defect(cx); !d.empty()) return d;
+    if (auto d = validation_defect(cx)) return d;
     return std::nullopt;
 }
 
 std::optional<std::string> corner_quadrant_defect(const CellComplex& cx) {
-    if (auto d = validation_defect(cx); !d.empty()) return d;
+    if (auto d = validation_defect(cx)) return d;
     const auto v = vertex_at_origin(cx);
     if (!v) return std::string("v is not a vertex");
     const Incidence inc(cx);
