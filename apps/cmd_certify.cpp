@@ -1,8 +1,10 @@
 // dualhex certify --out DIR: writes the certificates of the element library, the 256
 // configurations under the strong rule (DIR), the 487 weakly balanced ones under the weak rule
 // (DIR/weak), the 14 crossing variants (DIR/variants), the compositional windows (DIR/windows)
-// the root-boundary half windows (DIR/boundary) and the eight four-level weak grids
-// (DIR/weak_spread), each directory with its manifest
+// the root-boundary half windows (DIR/boundary), the eight four-level weak grids
+// (DIR/weak_spread), the weak stars (DIR/weak_stars) and the weak root-surface stars
+// (DIR/weak_root_stars), each directory with its manifest; with --near-root-stars also the
+// weak stars near the root surface under Coarse (DIR/weak_near_root_stars, not shipped)
 // (format and checker: proofs/README.md). The certificates are untrusted output;
 // `dualhex-proof-checker DIR/manifest` (and DIR/weak/manifest, DIR/variants/manifest)
 // re-checks them. Without --force DIR must not exist or be empty.
@@ -18,16 +20,20 @@ namespace dualhex::app {
 void register_certify(CLI::App& app) {
     auto* sub = app.add_subcommand("certify",
                                    "Write certificates (elements, the 256 strong and 487 weak configurations, the 14 "
-                                   "crossing variants, the compositional and root-boundary windows, the four-level weak grids) for the "
+                                   "crossing variants, the compositional and root-boundary windows, the four-level weak grids, the "
+                                   "weak stars) for the "
                                    "independent checker dualhex-proof-checker");
     struct Options {
         std::string out, elements;
-        bool force = false, json = false, no_progress = false;
+        bool force = false, json = false, no_progress = false, near_root_stars = false;
     };
     auto opt = std::make_shared<Options>();
     sub->add_option("--out", opt->out, "Directory to write the certificates and the manifest into")->required();
     sub->add_option("--elements", opt->elements, "Element directory (default: the element library's default)");
     sub->add_flag("--force", opt->force, "Write into DIR even if it is not empty (overwriting certificates and manifests in it)");
+    sub->add_flag("--near-root-stars", opt->near_root_stars,
+                  "Also certify the weak stars near the root surface under Coarse into DIR/weak_near_root_stars "
+                  "(1,104,872 stars in 20,365 certificates, about 70 MB; minutes of CPU and several GB of memory)");
     add_json_flag(*sub, opt->json);
     add_no_progress_flag(*sub, opt->no_progress);
     sub->callback([opt] {
@@ -38,7 +44,7 @@ void register_certify(CLI::App& app) {
         const ElementLibrary library =
             opt->elements.empty() ? ElementLibrary::load_default() : ElementLibrary::load(opt->elements);
         ProgressBar bar = ProgressBar::for_stderr(opt->json, opt->no_progress);
-        const CertifyResult result = certify_library(library, dir, bar.callback());
+        const CertifyResult result = certify_library(library, dir, bar.callback(), opt->near_root_stars);
         bar.finish("certify: " + with_commas(result.certificates()) + " certificates written to " + dir.string());
         if (opt->json) {
             nlohmann::json sets = nlohmann::json::array();

@@ -1,7 +1,8 @@
 # tests for proofs/: the shipped certificates, their freshness, the checker under mutation
 
 # The independent checker re-checks the shipped certificates (no dualhex code involved), one
-# test per manifest: elements + strong tori, weak tori, crossing variants.
+# test per manifest: elements + strong tori, weak tori, crossing variants, windows, root
+# boundary, four-level grids, weak stars, weak root-surface stars.
 function(dualhex_check_shipped name manifest)
   add_test(NAME ${name} COMMAND dualhex-proof-checker ${PROJECT_SOURCE_DIR}/proofs/certificates/${manifest})
   set_tests_properties(${name} PROPERTIES PASS_REGULAR_EXPRESSION "VERIFIED: ")
@@ -12,6 +13,8 @@ dualhex_check_shipped(proofs_shipped_variant_certificates variants/manifest)
 dualhex_check_shipped(proofs_shipped_window_certificates windows/manifest)
 dualhex_check_shipped(proofs_shipped_boundary_certificates boundary/manifest)
 dualhex_check_shipped(proofs_shipped_weak_spread_certificates weak_spread/manifest)
+dualhex_check_shipped(proofs_shipped_weak_star_certificates weak_stars/manifest)
+dualhex_check_shipped(proofs_shipped_weak_root_star_certificates weak_root_stars/manifest)
 
 # Freshness (regenerate, compare with the manifest) and adversarial mutations.
 dualhex_add_test(test_proofs_certificates SOURCES test_proofs_certificates.cpp test_proofs_freshness.cpp

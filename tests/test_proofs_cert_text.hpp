@@ -18,7 +18,7 @@ struct Cert {
     std::vector<std::vector<int>> faces;
     std::vector<std::vector<int>> cells;  // 2*f + side
     std::vector<std::string> claims;  // the text after "claim "
-    std::string domain;               // "box" / "torus"
+    std::string domain;               // "box" / "torus" / "point" (lo)
     std::int64_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, period = 0;
 };
 
@@ -36,6 +36,7 @@ inline Cert parse(const std::string& text) {
             c.head.push_back(line);
             ls >> c.domain;
             if (c.domain == "box") ls >> c.lo[0] >> c.lo[1] >> c.lo[2] >> c.hi[0] >> c.hi[1] >> c.hi[2];
+            else if (c.domain == "point") ls >> c.lo[0] >> c.lo[1] >> c.lo[2];
             else ls >> c.period;
         }
         if (key == "v") {

@@ -40,6 +40,22 @@ std::string hist(const std::map<int, std::size_t>& h) {
     return s;
 }
 
+// 6 x the volume of cell ci: the fan triangles of its outward faces from each face's first
+// vertex, positions as `at` gives them relative to the cell's first vertex.
+template <class At>
+std::int64_t six_volume(const CellComplex& k, std::size_t ci, At&& at) {
+    std::int64_t vol = 0;
+    for (HalfFaceHandle h : k.cell_halffaces(CellHandle(ci))) {
+        auto l = k.halfface_vertices(h);
+        const LatticePoint a = at(k.position(l[0]));
+        for (std::size_t j = 1; j + 1 < l.size(); ++j) {
+            const LatticePoint b = at(k.position(l[j])), d = at(k.position(l[j + 1]));
+            vol += a.x * (b.y * d.z - b.z * d.y) - a.y * (b.x * d.z - b.z * d.x) + a.z * (b.x * d.y - b.y * d.x);
+        }
+    }
+    return vol;
+}
+
 // The truth, from dualhex's own code: every claim of the certificate holds.
 bool truth(const Cert& c) {
     const std::size_t V = c.pos.size();
@@ -84,7 +100,14 @@ bool truth(const Cert& c) {
     std::vector<int> interior;
     for (std::size_t v = 0; v < V; ++v)
         if (!inc.is_boundary(VertexHandle(v))) interior.push_back(static_cast<int>(v));
-    if (c.domain == "box") {
+    if (c.domain == "point") {  // a star: its point a vertex on no boundary face, 8 cells of positive volume
+        const auto p = std::find(c.pos.begin(), c.pos.end(), LatticePoint{c.lo[0], c.lo[1], c.lo[2]});
+        if (p == c.pos.end() || inc.is_boundary(VertexHandle(static_cast<std::size_t>(p - c.pos.begin()))) || k.n_cells() != 8) return false;
+        for (std::size_t ci = 0; ci < k.n_cells(); ++ci) {
+            const LatticePoint r = k.position(k.face_vertices(k.cell_halffaces(CellHandle(ci))[0].face())[0]);
+            if (six_volume(k, ci, [&](const LatticePoint& q) { return q - r; }) <= 0) return false;
+        }
+    } else if (c.domain == "box") {
         if (!check_element(k, ElementBox{{c.lo[0], c.lo[1], c.lo[2]}, c.hi[0] - c.lo[0]}).ok()) return false;
     } else {  // torus: closed, positions reduced, cells of positive volume filling the torus
         for (std::size_t f = 0; f < k.n_faces(); ++f)
@@ -102,15 +125,7 @@ bool truth(const Cert& c) {
                 }
                 return p;
             };
-            std::int64_t vol = 0;
-            for (HalfFaceHandle h : k.cell_halffaces(CellHandle(ci))) {
-                auto l = k.halfface_vertices(h);
-                const LatticePoint a = near(k.position(l[0]));
-                for (std::size_t j = 1; j + 1 < l.size(); ++j) {
-                    const LatticePoint b = near(k.position(l[j])), d = near(k.position(l[j + 1]));
-                    vol += a.x * (b.y * d.z - b.z * d.y) - a.y * (b.x * d.z - b.z * d.x) + a.z * (b.x * d.y - b.y * d.x);
-                }
-            }
+            const std::int64_t vol = six_volume(k, ci, near);
             if (vol <= 0) return false;
             total += vol;
         }
@@ -198,7 +213,7 @@ std::vector<std::pair<std::string, Cert>> mutations(const Cert& c, std::size_t s
             add("extra histogram entry", m);
         }
     }
-    if (c.domain == "box")
+    if (c.domain == "box" || c.domain == "point")
         for (std::size_t v = 0; v < c.pos.size(); ++v)
             for (int a = 0; a < 3; ++a)
                 for (int d : {-1, 1}) {  // move a vertex: sometimes still true (truth decides)
@@ -206,6 +221,15 @@ std::vector<std::pair<std::string, Cert>> mutations(const Cert& c, std::size_t s
                     m.pos[v][a] += d;
                     add("move vertex", m);
                 }
+    for (std::size_t v = 0; v < c.pos.size() && c.domain == "point"; ++v) {  // a star's point elsewhere
+        const LatticePoint& q = c.pos[v];
+        if (q == LatticePoint{c.lo[0], c.lo[1], c.lo[2]}) continue;
+        Cert m = c;
+        for (std::string& h : m.head)
+            if (h.rfind("domain ", 0) == 0) h = "domain point " + std::to_string(q.x) + " " + std::to_string(q.y) + " " + std::to_string(q.z);
+        m.lo[0] = q.x, m.lo[1] = q.y, m.lo[2] = q.z;
+        add("point at another vertex", m);
+    }
     return out;
 }
 
@@ -356,6 +380,25 @@ TEST(ProofsCertificates, MutationsOfBoundaryWindows) {
     EXPECT_GT(tally.rejected, 100u);
     EXPECT_EQ(tally.per_kind["rotate loop"].second, 0u);
     EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
+}
+
+TEST(ProofsCertificates, MutationsOfWeakStars) {
+    Tally tally;  // the largest and the smallest interior star, and the largest doubled root-surface one
+    const auto all = [](const std::string&) { return true; };
+    const auto shorter = [](const std::string& a, const std::string& b) { return a.size() < b.size(); };
+    const std::vector<std::string> stars = shipped_certificates(kShipped / "weak_stars", all);
+    ASSERT_EQ(stars.size(), 4462u);
+    check_mutations({parse(*std::max_element(stars.begin(), stars.end(), shorter))}, "star-large", tally, 1);
+    check_mutations({parse(*std::min_element(stars.begin(), stars.end(), shorter))}, "star-small", tally, 1);
+    const std::vector<std::string> root = shipped_certificates(kShipped / "weak_root_stars", all);
+    ASSERT_EQ(root.size(), 102u);
+    check_mutations({parse(*std::max_element(root.begin(), root.end(), shorter))}, "root-star", tally, 1);
+    report(tally);
+    EXPECT_GT(tally.rejected, 500u);
+    EXPECT_EQ(tally.per_kind["rotate loop"].second, 0u);
+    EXPECT_EQ(tally.per_kind["duplicate cell"].second, tally.per_kind["duplicate cell"].first);
+    EXPECT_GT(tally.per_kind["point at another vertex"].first, 50u);  // every other vertex is on the rim
+    EXPECT_EQ(tally.per_kind["point at another vertex"].second, tally.per_kind["point at another vertex"].first);
 }
 
 }  // namespace

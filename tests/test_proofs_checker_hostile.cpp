@@ -13,9 +13,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -304,6 +307,109 @@ TEST_F(Hostile, ATorusCellSpanningHalfThePeriodIsRejected) {
         if (std::string(x36) == "25") EXPECT_EQ(r.code, 0) << r.out;
         else expect_rejected_run(r, "spans half the torus period", "x planes 0 1 2 26");
     }
+}
+
+
+// --------------------------------------------------------------- stars
+// A star at the origin: one tetrahedron (origin, a, b, c) per triangle of a triangulated
+// sphere of `link` points around it, every face oriented out of its cell (computed here).
+// Options: the kind and domain lines, the claims, the triangles left out, a far cube added.
+struct StarText {
+    std::string kind = "star", domain = "point 0 0 0";
+    std::string claims = "claim subdivision\nclaim valences\nclaim all-hex-dual\n";
+    std::set<int> dropped;
+    bool far_cube = false;
+    std::map<int, std::array<long long, 3>> moved;  // link points written elsewhere, orientations kept
+};
+using Point = std::array<long long, 3>;
+std::string tetra_star(std::vector<Point> link, const std::vector<std::array<int, 3>>& triangles, const StarText& o = {}) {
+    std::vector<Point> pos{{0, 0, 0}};
+    pos.insert(pos.end(), link.begin(), link.end());
+    std::vector<std::vector<int>> faces;
+    std::map<std::set<int>, int> face_of;
+    std::ostringstream cells;
+    auto det = [&](int u, int v, int w, int q) {  // (v - u) x (w - u) . (q - u)
+        Point a{}, b{}, c{};
+        for (int k = 0; k < 3; ++k) a[k] = pos[v][k] - pos[u][k], b[k] = pos[w][k] - pos[u][k], c[k] = pos[q][k] - pos[u][k];
+        return (a[1] * b[2] - a[2] * b[1]) * c[0] + (a[2] * b[0] - a[0] * b[2]) * c[1] + (a[0] * b[1] - a[1] * b[0]) * c[2];
+    };
+    auto face = [&](std::vector<int> loop, int opposite) {  // "+f" / "-f": outward from the cell with `opposite`
+        auto [it, fresh] = face_of.emplace(std::set<int>(loop.begin(), loop.end()), static_cast<int>(faces.size()));
+        if (fresh) faces.push_back(loop);
+        const auto& l = faces[static_cast<std::size_t>(it->second)];
+        return (det(l[0], l[1], l[2], opposite) < 0 ? " +" : " -") + std::to_string(it->second);
+    };
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        if (o.dropped.count(static_cast<int>(t))) continue;
+        const int a = triangles[t][0] + 1, b = triangles[t][1] + 1, c = triangles[t][2] + 1;
+        cells << 'c' << face({a, b, c}, 0) << face({0, a, b}, c) << face({0, b, c}, a) << face({0, c, a}, b) << '\n';
+    }
+    if (o.far_cube) {  // the unit cube at (100, 100, 100): a ninth cell, away from the point
+        const int v0 = static_cast<int>(pos.size());
+        for (int v = 0; v < 8; ++v) pos.push_back({100 + (v & 1), 100 + (v >> 1 & 1), 100 + (v >> 2 & 1)});
+        const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+        cells << 'c';
+        for (const auto& f : q) cells << " +" << faces.size(), faces.push_back({v0 + f[0], v0 + f[1], v0 + f[2], v0 + f[3]});
+        cells << '\n';
+    }
+    std::ostringstream out;
+    out << "dualhex-certificate 2\nname star\nkind " << o.kind << "\ndomain " << o.domain << '\n';
+    for (const auto& [k, p] : o.moved) pos[static_cast<std::size_t>(k) + 1] = p;
+    for (const Point& p : pos) out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for (const auto& f : faces) {
+        out << 'f';
+        for (int v : f) out << ' ' << v;
+        out << '\n';
+    }
+    out << cells.str() << o.claims << "end\n";
+    return out.str();
+}
+// The octahedron: the 6 points +-6 e_a, one triangle per octant (a valid star: 6 edges, 8 cells).
+const std::vector<Point> kOctahedron{{6, 0, 0}, {-6, 0, 0}, {0, 6, 0}, {0, -6, 0}, {0, 0, 6}, {0, 0, -6}};
+std::vector<std::array<int, 3>> octants() {
+    std::vector<std::array<int, 3>> out;
+    for (int s = 0; s < 8; ++s) out.push_back({s & 1, 2 + (s >> 1 & 1), 4 + (s >> 2 & 1)});
+    return out;
+}
+
+TEST_F(Hostile, AStarIsCheckedAtItsPointAndHasNoOtherCells) {
+    const CheckerRun good = run_checker("--file " + put("star.cert", tetra_star(kOctahedron, octants())).string());
+    ASSERT_EQ(good.code, 0) << good.out;
+    EXPECT_NE(good.out.find("VERIFIED: 1 star certificates"), std::string::npos) << good.out;
+    EXPECT_NE(good.out.find("1 interior vertices (1 cube dual cells), 6 interior edges checked, 6 edges locally injective"),
+              std::string::npos) << good.out;
+    const std::vector<std::tuple<std::function<void(StarText&)>, std::string, std::string>> mutants{
+        {[](StarText& o) { o.domain = "point 1 0 0"; }, "the star's point is not a vertex on no boundary face",
+         "the point is no vertex"},
+        {[](StarText& o) { o.domain = "point 6 0 0"; }, "the star's point is not a vertex on no boundary face",
+         "the point is a rim vertex"},
+        {[](StarText& o) { o.dropped = {5}; }, "the star's point is not a vertex on no boundary face",
+         "a cell left out: the star is open"},
+        {[](StarText& o) { o.far_cube = true; }, "a star has its point's 8 cells and no other, not 9 cells",
+         "a ninth cell away from the point"},
+        {[](StarText& o) { o.domain = "box -6 -6 -6 6 6 6"; }, "kind star needs domain point", "a star over a box"},
+        {[](StarText& o) { o.kind = "installation"; }, "kind installation needs domain box", "an installation at a point"},
+        {[](StarText& o) { o.claims = "claim subdivision\nclaim all-hex-dual\n"; }, "kind star must claim 'valences'",
+         "a star claiming less"},
+        {[](StarText& o) { o.domain = "point 0 0 0 0"; },
+         "expected 'domain box X0 Y0 Z0 X1 Y1 Z1', 'torus P' or 'point X Y Z'", "a point of four coordinates"},
+        // a link point pulled through the centre: the cells at it are inverted
+        {[](StarText& o) { o.moved = {{4, {0, 0, -3}}}; }, "has non-positive volume", "a link point pulled through"},
+    };
+    for (const auto& [edit, why, what] : mutants) {
+        StarText o;
+        edit(o);
+        expect_rejected(tetra_star(kOctahedron, octants(), o), why, what);
+    }
+}
+
+TEST_F(Hostile, AStarWithTheOtherSixPointLinkIsRejected) {
+    // The sphere has two triangulations with 6 vertices and 8 triangles: the octahedron, and the
+    // triangular bipyramid N, S over A B C with face N A B stacked by X (degrees 3 3 4 4 5 5).
+    // Its star has 6 edges and 8 cells at the point, but edges of 3 and 5 cells: no octahedron.
+    const std::vector<Point> link{{6, 0, 0}, {-3, 5, 0}, {-3, -5, 0}, {0, 0, 6}, {0, 0, -6}, {2, 3, 3}};  // A B C N S X
+    const std::vector<std::array<int, 3>> faces{{3, 1, 2}, {3, 2, 0}, {4, 0, 1}, {4, 1, 2}, {4, 2, 0}, {5, 3, 0}, {5, 0, 1}, {5, 1, 3}};
+    expect_rejected(tetra_star(link, faces), "link is not an octahedron", "the stacked bipyramid");
 }
 
 }  // namespace

@@ -7,27 +7,21 @@
 
 #include "dualhex/topology/complex_builder.hpp"
 #include "dualhex/topology/cube_symmetry.hpp"
-#include "oriented_form.hpp"
+#include "congruence_check.hpp"
 #include "window_check.hpp"
 
 namespace dualhex {
 namespace {
 
-// The smallest oriented form over the 48 symmetries about the origin: equal keys = congruent.
-detail::OrientedForm class_key(const CellComplex& k) {
-    detail::OrientedForm best;
-    for (int i = 0; i < CubeSymmetry::kOrder; ++i) {
-        const CubeSymmetry s = CubeSymmetry::from_index(i);
-        detail::OrientedForm f = detail::oriented_form(k, [&](const LatticePoint& p) { return s.apply(p); }, !s.is_rotation());
-        if (f.empty()) throw std::runtime_error("certify_boundary_windows: a window has no lattice form");
-        if (best.empty() || f < best) best = std::move(f);
-    }
-    return best;
-}
+struct Class {
+    std::string witness;
+    CellComplex complex;
+    std::vector<std::int64_t> members;
+};
 
-// The doubled window is its own image under the reflection across each root plane (the
-// argument in proofs/README.md needs exactly this; the checker does not check it).
-bool symmetric(const CellComplex& k, const RootSides& sides) {
+}  // namespace
+
+bool symmetric_across_root_planes(const CellComplex& k, const RootSides& sides) {
     const detail::OrientedForm self = detail::oriented_form(k, [](const LatticePoint& p) { return p; }, false);
     for (int a = 0; a < 3; ++a) {
         if (sides[static_cast<std::size_t>(a)] == 0) continue;
@@ -39,14 +33,6 @@ bool symmetric(const CellComplex& k, const RootSides& sides) {
     }
     return true;
 }
-
-struct Class {
-    std::string witness;
-    CellComplex complex;
-    std::vector<std::int64_t> members;
-};
-
-}  // namespace
 
 CellComplex double_half_window(const CellComplex& half, const RootSides& sides) {
     unsigned axes = 0;
@@ -96,9 +82,11 @@ CertificateSet certify_boundary_windows(const TransitionRule& rule, const Elemen
             return c;
         });
         if (!r.ok()) throw std::runtime_error("certify_boundary_windows: doubled window " + w.witness + " fails: " + r.summary());
-        if (!symmetric(doubled, w.type->sides))
+        if (!symmetric_across_root_planes(doubled, w.type->sides))
             throw std::runtime_error("certify_boundary_windows: doubled window " + w.witness + " is not symmetric");
-        const auto [it, fresh] = class_of.emplace(class_key(doubled), classes.size());
+        detail::OrientedForm key = detail::congruence_key(doubled);
+        if (key.empty()) throw std::runtime_error("certify_boundary_windows: a window has no lattice form");
+        const auto [it, fresh] = class_of.emplace(std::move(key), classes.size());
         if (fresh) classes.push_back({w.witness, std::move(doubled), {}});
         classes[it->second].members.push_back(label++);
     };

@@ -5,6 +5,7 @@
 #include "dualhex/checkers/compositional_weak.hpp"
 #include "dualhex/checkers/boundary_certificates.hpp"
 #include "dualhex/checkers/window_certificates.hpp"
+#include "dualhex/checkers/weak_star_certificates.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,6 +25,7 @@ const char* to_string(CertificateKind kind) {
         case CertificateKind::Element: return "element";
         case CertificateKind::Configuration: return "configuration";
         case CertificateKind::Installation: return "installation";
+        case CertificateKind::Star: return "star";
         case CertificateKind::Histogram: return "histogram";
     }
     return "?";
@@ -42,7 +44,8 @@ void write_histogram(std::ostream& out, const char* claim, const std::map<int, s
 void write_certificate(std::ostream& out, const CellComplex& complex, const CertificateSpec& spec) {
     bool subdivision = spec.subdivision, valences = spec.valences, dual = spec.all_hex_dual;
     if (spec.kind == CertificateKind::Element) subdivision = true;
-    if (spec.kind == CertificateKind::Configuration || spec.kind == CertificateKind::Installation)
+    if (spec.kind == CertificateKind::Configuration || spec.kind == CertificateKind::Installation ||
+        spec.kind == CertificateKind::Star)
         subdivision = valences = dual = true;
     if (spec.name.empty() || spec.name.find_first_of(" \t\n#") != std::string::npos)
         throw std::invalid_argument("certificate name must be one word: '" + spec.name + "'");
@@ -57,6 +60,7 @@ void write_certificate(std::ostream& out, const CellComplex& complex, const Cert
                 << d.hi.z << '\n';
             break;
         case CertificateDomain::Type::Torus: out << "domain torus " << d.period << '\n'; break;
+        case CertificateDomain::Type::Point: out << "domain point " << d.lo.x << ' ' << d.lo.y << ' ' << d.lo.z << '\n'; break;
     }
     for (const LatticePoint& p : complex.positions()) out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
     for (std::size_t f = 0; f < complex.n_faces(); ++f) {
@@ -175,7 +179,8 @@ std::size_t CertifyResult::bytes() const {
     return n;
 }
 
-CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir, const Progress& progress) {
+CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir, const Progress& progress,
+                              bool near_root_stars) {
     CertifyResult result;
     result.sets.push_back(certify_strong(library, StrongRule{}, dir, progress));
     result.sets.push_back(certify_weak(library, WeakRule{}, dir / "weak", progress));
@@ -185,6 +190,14 @@ CertifyResult certify_library(const ElementLibrary& library, const std::filesyst
     report_progress(progress, "boundary windows", 0, 1);
     result.sets.push_back(certify_boundary_windows(StrongRule{}, library, dir / "boundary"));
     result.sets.push_back(certify_spread_grids(library, dir / "weak_spread"));
+    report_progress(progress, "weak stars", 0, 1);
+    result.sets.push_back(certify_weak_stars(library, dir / "weak_stars"));
+    report_progress(progress, "weak root stars", 0, 1);
+    result.sets.push_back(certify_weak_root_stars(library, dir / "weak_root_stars"));
+    if (near_root_stars) {
+        report_progress(progress, "weak near-root stars", 0, 1);
+        result.sets.push_back(certify_weak_near_root_stars(library, dir / "weak_near_root_stars"));
+    }
     return result;
 }
 

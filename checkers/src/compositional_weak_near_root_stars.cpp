@@ -60,11 +60,6 @@ bool symmetric(const std::array<int, 8>& levels, unsigned axes) {
     return true;
 }
 
-bool at_v(const LatticePoint& q) { return q == LatticePoint{}; }
-bool away_from_v(const CellComplex& cx, std::span<const VertexHandle> loop) {
-    return std::none_of(loop.begin(), loop.end(), [&](VertexHandle h) { return at_v(cx.position(h)); });
-}
-
 // What every run shares, and one thread's tally.
 struct Shared {
     const TransitionRule& rule;
@@ -184,22 +179,42 @@ private:
                 continue;
             }
             ++tally_.stars;
-            if (const auto why = star_defect(p, contexts)) fail(planes, *why);
+            if (const auto why = star_defect(p, contexts, planes, pieces)) fail(planes, *why);
             else ++tally_.passed;
         }
     }
 
-    // B1-B5 if a plane passes through v, else W9 (vi)'s interior checks.
-    std::optional<std::string> star_defect(const Pair& p, const std::vector<int>& contexts) {
+    // B1-B5 if a plane passes through v, else W9 (vi)'s interior checks; a star that passes
+    // is told (options.passed).
+    std::optional<std::string> star_defect(const Pair& p, const std::vector<int>& contexts, const Planes& planes,
+                                           const std::vector<int>& pieces) {
         try {
             const ConfigurationComplex star = build_star(s_.inf, s_.rule, cache_, p, v_, contexts);
-            if (planes_.count() > 0) return boundary_vertex_defect(star.complex, sides_);
-            const ConfigurationReport r = detail::analyse(star, at_v, away_from_v);
-            if (r.ok() && r.checked_vertices == 1) return std::nullopt;
-            return r.summary();
+            std::optional<std::string> why;
+            if (planes_.count() > 0) why = boundary_vertex_defect(star.complex, sides_);
+            else if (const ConfigurationReport r = detail::analyse(star, at_v, away_from_v); !r.ok() || r.checked_vertices != 1)
+                why = r.summary();
+            if (!why && s_.options.passed) s_.options.passed(label(planes, pieces), star.complex);
+            return why;
         } catch (const std::exception& e) {
             return std::string(e.what());
         }
+    }
+
+    // The further planes are those of `planes` not through v.
+    WeakNearRootStarLabel label(const Planes& planes, const std::vector<int>& pieces) const {
+        WeakNearRootStarLabel out{parity(), v_ - g_, levels_, sides_, {}, {}, pieces};
+        for (std::size_t a = 0; a < 3; ++a) {
+            if (planes.lo[a] != planes_.lo[a]) out.below[a] = planes.lo[a];
+            if (planes.hi[a] != planes_.hi[a]) out.above[a] = planes.hi[a];
+        }
+        return out;
+    }
+    int parity() const {
+        const std::int64_t E = cell_size(s_.inf.unit, 0);
+        int t = 0;
+        for (int a = 0; a < 3; ++a) t |= (g_[a] / E != 0 ? 1 : 0) << a;
+        return t;
     }
 
     void check_corner(const Planes& planes, const Pair& p) {

@@ -192,12 +192,6 @@ std::string describe(const std::array<int, 3>& parity, const Pair& p, const std:
     return os.str();
 }
 
-// Only v gets the interior checks; the star's faces away from v are its expected rim.
-bool at_v(const LatticePoint& q) { return q == LatticePoint{}; }
-bool away_from_v(const CellComplex& cx, std::span<const VertexHandle> loop) {
-    return std::none_of(loop.begin(), loop.end(), [&](VertexHandle h) { return at_v(cx.position(h)); });
-}
-
 }  // namespace
 
 WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& library, const WeakStarInfluence& inf,
@@ -272,10 +266,15 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
                         }
                         ++local.stars;
                         if (!options.build_stars) continue;
-                        const ConfigurationReport r =
-                            detail::check(0, [&] { return build_star(inf, rule, cache, p, v, contexts); }, at_v, away_from_v);
-                        if (r.ok() && r.checked_vertices == 1) ++local.passed;
-                        else fail(contexts, r.summary());
+                        std::optional<ConfigurationComplex> star;
+                        const auto build = [&] { return *(star = build_star(inf, rule, cache, p, v, contexts)); };
+                        const ConfigurationReport r = detail::check(0, build, at_v, away_from_v);
+                        if (!r.ok() || r.checked_vertices != 1) {
+                            fail(contexts, r.summary());
+                            continue;
+                        }
+                        ++local.passed;
+                        if (options.passed) options.passed({t, v - g, levels, pieces}, star->complex);
                     }
                     verdict();
                 });

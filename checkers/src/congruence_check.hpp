@@ -156,4 +156,16 @@ inline std::vector<CubeSymmetry> all_symmetries() {
     return out;
 }
 
+/// The smallest oriented form over the 48 symmetries about the origin (empty if the complex
+/// has no form): equal keys mean that one complex is exactly the other moved by one of them.
+inline OrientedForm congruence_key(const FormArrays& k) {
+    OrientedForm best;
+    for (int i = 0; i < CubeSymmetry::kOrder; ++i) {
+        OrientedForm f = symmetric_form(k, CubeSymmetry::from_index(i));
+        if (f.empty()) return {};
+        if (best.empty() || f < best) best = std::move(f);
+    }
+    return best;
+}
+
 }  // namespace dualhex::detail

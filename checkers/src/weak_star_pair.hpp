@@ -3,10 +3,12 @@
 // the two enumerations of its stars (compositional_weak_star_check.cpp: the product of
 // shared and private assignments, the reference; compositional_weak_star_search.cpp: the
 // backtracking search over partial assignments, proofs/README.md W9 (vi)-(vii)).
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <stdexcept>
 #include <vector>
@@ -15,6 +17,13 @@
 #include "weak_star_leaves.hpp"
 
 namespace dualhex::weak_stars {
+
+// The star check's filters: v (the origin) is the one vertex given the interior checks; the
+// star's faces away from v are its expected rim.
+inline bool at_v(const LatticePoint& q) { return q == LatticePoint{}; }
+inline bool away_from_v(const CellComplex& cx, std::span<const VertexHandle> loop) {
+    return std::none_of(loop.begin(), loop.end(), [&](VertexHandle h) { return at_v(cx.position(h)); });
+}
 
 // One leaf at v with its context bits split: forced (a value), shared or private (an index
 // into the pair's shared / the leaf's private list).

@@ -67,8 +67,7 @@ i64 to_int(const string& t, int line, bool coordinate = false) {  // a coordinat
     i64 v = 0;
     auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
     if (ec != std::errc() || p != t.data() + t.size()) fail("line ", line, ": not an integer: ", t);
-    if (coordinate && (v < -kMaxCoord || v > kMaxCoord))
-        fail("line ", line, ": ", t, " outside [-2^19, 2^19]");
+    if (coordinate && (v < -kMaxCoord || v > kMaxCoord)) fail("line ", line, ": ", t, " outside [-2^19, 2^19]");
     return v;
 }
 // Ids in [0, bound); a signed one ("+f", "-f": a cell's face) becomes 2f or 2f + 1.
@@ -90,18 +89,18 @@ struct Cert {
     map<string, vector<string>> claims;
     vector<i64> covers;  // labels (e.g. configuration masks) this certificate stands for
 };
-// box X0 Y0 Z0 X1 Y1 Z1 | torus P, kept as the box [0, P]^3 (hi: the period)
+// box X0 Y0 Z0 X1 Y1 Z1 | torus P, kept as the box [0, P]^3 (hi: the period) | point X Y Z (lo)
 void read_domain(Cert& c, const Line& l) {
     c.domain = l.tok.size() > 1 ? l.tok[1] : "";
-    const bool box = c.domain == "box" && l.tok.size() == 8;
-    if (!box && !(c.domain == "torus" && l.tok.size() == 3))
-        fail("line ", l.number, ": expected 'domain box X0 Y0 Z0 X1 Y1 Z1' or 'domain torus P'");
+    const bool box = c.domain == "box" && l.tok.size() == 8, point = c.domain == "point" && l.tok.size() == 5;
+    if (!box && !point && !(c.domain == "torus" && l.tok.size() == 3))
+        fail("line ", l.number, ": expected 'domain box X0 Y0 Z0 X1 Y1 Z1', 'torus P' or 'point X Y Z'");
     for (int a = 0; a < 3; ++a) {
-        c.lo[a] = box ? to_int(l.tok[2 + a], l.number, true) : 0;
-        c.hi[a] = to_int(l.tok[box ? 5 + a : 2], l.number, true);
-        if (c.hi[a] <= c.lo[a]) fail("line ", l.number, ": empty domain on axis ", a);
+        c.lo[a] = box || point ? to_int(l.tok[2 + a], l.number, true) : 0;
+        c.hi[a] = point ? c.lo[a] : to_int(l.tok[box ? 5 + a : 2], l.number, true);
+        if (!point && c.hi[a] <= c.lo[a]) fail("line ", l.number, ": empty domain on axis ", a);
     }
-    if (!box && c.hi[0] % 2) fail("line ", l.number, ": bad torus period (odd)");
+    if (c.domain == "torus" && c.hi[0] % 2) fail("line ", l.number, ": bad torus period (odd)");
 }
 // A row (v x y z | f VERTEX-IDS | c SIGNED-FACE-IDS) or a section (given once, `claim` per claim)
 void read_line(Cert& c, const Line& l, set<string>& seen) {
@@ -110,8 +109,7 @@ void read_line(Cert& c, const Line& l, set<string>& seen) {
     const vector<string> args(l.tok.begin() + 1, l.tok.end());
     const string at = cat("line ", l.number, ": ");
     if (!known.count(key)) fail(at, "unknown keyword '", key, "'");
-    if (key.size() > 1 && key != "claim" && !seen.insert(key).second)
-        fail(at, "section '", key, "' given twice");
+    if (key.size() > 1 && key != "claim" && !seen.insert(key).second) fail(at, "section '", key, "' given twice");
     if (key == "v" && args.size() != 3) fail(at, "expected 'v x y z'");
     if (key == "v") c.pos.push_back({});
     for (int a = 0; a < 3 && key == "v"; ++a) c.pos.back()[a] = to_int(args[a], l.number, true);
@@ -123,8 +121,7 @@ void read_line(Cert& c, const Line& l, set<string>& seen) {
     if (key == "domain") read_domain(c, l);
     if (key == "claim" && (args.empty() || c.claims.count(args[0]))) fail(at, "bad claim");
     if (key == "claim") c.claims[args[0]] = vector<string>(args.begin() + 1, args.end());
-    for (size_t i = 0; key == "covers" && i < args.size(); ++i)
-        c.covers.push_back(to_int(args[i], l.number));
+    for (size_t i = 0; key == "covers" && i < args.size(); ++i) c.covers.push_back(to_int(args[i], l.number));
 }
 // The certificate from L[at] to its `end`; at: then the line after it (on a Reject the failing one)
 Cert parse(const vector<Line>& L, size_t& at) {
@@ -233,7 +230,7 @@ void check_conformity(const Cert& c, Mesh& m) {
         for (int e : m.face_edges[f]) m.bdry_e[e] = 1;
     }
     for (int v = 0; v < len(c.pos); ++v) {
-        for (int a = 0; a < 3; ++a)  // in [lo, hi], on a torus in [0, period)
+        for (int a = 0; a < 3 && c.domain != "point"; ++a)  // in [lo, hi], on a torus in [0, period)
             if (c.pos[v][a] < c.lo[a] || c.pos[v][a] > c.hi[a] - (c.domain == "torus"))
                 fail("vertex ", v, " is outside the domain");
         if (!seen.insert(c.pos[v]).second) fail("vertex ", v, " repeats an earlier position");
@@ -267,7 +264,7 @@ FaceFan face_fan(const Cert& c, int f) {
     }
     return fan;
 }
-// Positive volumes summing to the domain's, 6V = sum of l0 . area (README); torus: spans < P/2
+// Positive volumes summing to the domain's (a star: any), 6V = sum of l0 . area; torus: spans < P/2
 void check_volumes(const Cert& c, const vector<FaceFan>& fans) {
     const bool torus = c.domain == "torus";
     i128 total = 0;
@@ -291,7 +288,7 @@ void check_volumes(const Cert& c, const vector<FaceFan>& fans) {
     }
     i128 expect = 6;
     for (int a = 0; a < 3; ++a) expect *= c.hi[a] - c.lo[a];
-    if (total != expect) fail("6 x the volumes sum to ", str(total), ", not ", str(expect));
+    if (c.domain != "point" && total != expect) fail("6 x the volumes sum to ", str(total), ", not ", str(expect));
 }
 // Boundary faces on the box surface, outward, no others on it: with the volume sum, a tiling
 void check_box_boundary(const Cert& c, const Mesh& m, const vector<FaceFan>& fans) {
@@ -390,8 +387,8 @@ enum Count { kVertices, kEdges, kFaces, kCells, kInnerVertices, kInnerEdges, kCu
 using Stats = std::array<size_t, kN>;  // one certificate: what it counts, then its claims
 void check_kind(const Cert& c) {  // the kind fixes the domain and the minimum claims
     const vector<string> hexes{"subdivision", "valences", "all-hex-dual"};
-    const map<string, pair<string, vector<string>>> kinds = {{"element", {"box", {"subdivision"}}},
-        {"configuration", {"torus", hexes}}, {"installation", {"box", hexes}}, {"histogram", {}}};
+    const map<string, pair<string, vector<string>>> kinds = {{"element", {"box", {"subdivision"}}}, {"histogram", {}},
+        {"configuration", {"torus", hexes}}, {"installation", {"box", hexes}}, {"star", {"point", hexes}}};
     const auto k = kinds.find(c.kind);
     if (k == kinds.end()) fail("unknown kind '", c.kind, "'");
     const auto& [domain, needed] = k->second;
@@ -420,6 +417,13 @@ void check_claims(const Cert& c, const Mesh& m, const Stats& st) {
         if (args != is[claim]) fail("a claim is not the computed '", claim, computed, "'");
     }
 }
+// A star (domain point p): p on no boundary face, so its cells close around it; 8 (check_star: at p)
+int star_point(const Cert& c, const Mesh& m) {
+    const int p = static_cast<int>(std::ranges::find(c.pos, P3{c.lo[0], c.lo[1], c.lo[2]}) - c.pos.begin());
+    if (p == len(c.pos) || m.bdry_v[p]) fail("the star's point is not a vertex on no boundary face");
+    if (c.cells.size() != 8) fail("a star has its point's 8 cells and no other, not ", c.cells.size(), " cells");
+    return p;
+}
 Stats check(const Cert& c) {
     check_kind(c);
     Mesh m;
@@ -428,13 +432,14 @@ Stats check(const Cert& c) {
     for (int k = 0; k < len(c.cells); ++k) check_cell(c, m, k);
     check_conformity(c, m);
     Stats st{c.pos.size(), m.edges.size(), c.faces.size(), c.cells.size(), 0, 0, 0, 0};
-    if (c.claims.count("subdivision")) {  // cover with degree 1, locally injective at every edge
+    const int p = c.domain == "point" ? star_point(c, m) : -1;  // a star: only p's edges are wound
+    if (c.claims.count("subdivision")) {  // cover with degree 1, locally injective at every edge (or p's)
         vector<FaceFan> fans;
         for (int f = 0; f < len(c.faces); ++f) fans.push_back(face_fan(c, f));
         check_volumes(c, fans);
         if (c.domain == "box") check_box_boundary(c, m, fans);
-        for (int e = 0; e < len(m.edges); ++e) check_winding(c, m, fans, e);
-        st[kWound] = m.edges.size();
+        for (int e = 0; e < len(m.edges); ++e)
+            if (p < 0 || m.edges[e].first == p || m.edges[e].second == p) check_winding(c, m, fans, e), ++st[kWound];
     }
     const bool valences = c.claims.count("valences"), dual = c.claims.count("all-hex-dual");
     for (int v = 0; v < len(c.pos); ++v) {
@@ -489,8 +494,7 @@ size_t check_file(const string& path, const string& text, Totals& t, const strin
 // A regular file of at most kMaxFileBytes and at most the budget (spent), or a Reject.
 string read_file(const std::filesystem::path& p, std::uintmax_t& budget) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(p, ec))
-        fail("cannot read ", p.string(), ": not a regular file");
+    if (!std::filesystem::is_regular_file(p, ec)) fail("cannot read ", p.string(), ": not a regular file");
     const std::uintmax_t size = std::filesystem::file_size(p, ec);
     if (ec || size > kMaxFileBytes) fail(p.string(), ": larger than the 256 MiB a file may have");
     if (size > budget) fail(p.string(), ": the manifest's files exceed 1 GiB in all");
@@ -518,8 +522,7 @@ void check_manifest(const std::filesystem::path& manifest, const string& text, T
             if ((tok[0] == "total" || tok[0] == "covers") && tok.size() == 2) {
                 i64& slot = tok[0] == "total" ? total : t.covers;
                 const i64 v = to_int(tok[1], L[i].number);
-                if (slot >= 0 || v < 0 || v > i64{1} << 40)
-                    fail(tok[0], " given twice, negative or absurd");
+                if (slot >= 0 || v < 0 || v > i64{1} << 40) fail(tok[0], " given twice, negative or absurd");
                 slot = v;
                 continue;
             }
@@ -568,8 +571,7 @@ int run(const vector<string>& args) {
         if (args.size() == 1) check_manifest(args[0], text, t);
         if (args.size() == 2) {
             const size_t n = check_file(args[1], text, t);
-            std::cout << args[1] << ": " << n << " certificates";
-            std::cout << " (covers lines are checked only with a manifest)\n";
+            std::cout << args[1] << ": " << n << " certificates (covers lines are checked only with a manifest)\n";
         }
     } catch (const Reject& r) {
         std::cout << "REJECTED: " << r.why << '\n';
@@ -580,8 +582,7 @@ int run(const vector<string>& args) {
     std::cout << "parsed: " << t.certificates << " certificates, " << s[kVertices] << " vertices, "
               << s[kEdges] << " edges, " << s[kFaces] << " faces, " << s[kCells] << " cells\n";
     if (t.rejected || t.problems || t.certificates == 0) {
-        std::cout << "FAILED: " << t.rejected << " certificates rejected, ";
-        std::cout << t.problems << " manifest problems\n";
+        std::cout << "FAILED: " << t.rejected << " certificates rejected, " << t.problems << " manifest problems\n";
         return 1;
     }
     std::cout << "VERIFIED:";

@@ -14,6 +14,10 @@ namespace dualhex {
 
 /// The half window reflected across the root planes of `sides` (the planes x_a = 0).
 [[nodiscard]] CellComplex double_half_window(const CellComplex& half, const RootSides& sides);
+/// True iff the complex is its own image (exact oriented forms) under the reflection across
+/// each root plane of `sides`: what the argument from a doubled complex back to its half
+/// needs (proofs/README.md, "Root boundary" step 6); the checker does not check it.
+[[nodiscard]] bool symmetric_across_root_planes(const CellComplex& complex, const RootSides& sides);
 
 /// Into `dir`: boundary-AAAA-BBBB.cert, one `installation` certificate (box [-U, U]^3) per
 /// congruence class (48 symmetries about g) of the doubled half windows of the `Coarse`

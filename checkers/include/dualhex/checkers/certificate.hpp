@@ -9,8 +9,8 @@
 // Format version 2:
 //   dualhex-certificate 2
 //   name NAME
-//   kind element|configuration|installation|histogram
-//   domain box X0 Y0 Z0 X1 Y1 Z1 | domain torus P
+//   kind element|configuration|installation|star|histogram
+//   domain box X0 Y0 Z0 X1 Y1 Z1 | domain torus P | domain point X Y Z (a star's vertex)
 //   v x y z         one line per vertex               (vertex ids 0, 1, ... in order)
 //   f v0 v1 v2 ...  one line per face: a vertex loop  (face ids 0, 1, ...)
 //   c +f -g ...     one line per cell: signed faces   (+f: face f's loop as written is
@@ -54,18 +54,19 @@ class TransitionRule;
 
 inline constexpr int kCertificateFormatVersion = 2;
 
-enum class CertificateKind { Element, Configuration, Installation, Histogram };
+enum class CertificateKind { Element, Configuration, Installation, Star, Histogram };
 [[nodiscard]] const char* to_string(CertificateKind kind);
 
 struct CertificateDomain {
-    enum class Type { Box, Torus } type = Type::Box;
-    LatticePoint lo, hi;     ///< Box: the box [lo, hi]
+    enum class Type { Box, Torus, Point } type = Type::Box;
+    LatticePoint lo, hi;     ///< Box: the box [lo, hi]; Point: the star's point, lo
     std::int64_t period = 0; ///< Torus: vertex coordinates are residues modulo period (all axes)
 
     [[nodiscard]] static CertificateDomain box(const LatticePoint& lo, const LatticePoint& hi) {
         return {Type::Box, lo, hi, 0};
     }
     [[nodiscard]] static CertificateDomain torus(std::int64_t period) { return {Type::Torus, {}, {}, period}; }
+    [[nodiscard]] static CertificateDomain point(const LatticePoint& p) { return {Type::Point, p, p, 0}; }
 };
 
 struct CertificateSpec {
@@ -73,7 +74,7 @@ struct CertificateSpec {
     CertificateKind kind = CertificateKind::Histogram;
     CertificateDomain domain;
     /// The claims beyond counts / histograms / interior count (always written). The kind
-    /// fixes the minimum: element = subdivision; configuration and installation =
+    /// fixes the minimum: element = subdivision; configuration, installation and star =
     /// subdivision + valences + all-hex-dual (set automatically).
     bool subdivision = false, valences = false, all_hex_dual = false;
     std::vector<std::string> comments;  ///< '#' lines after the header
@@ -171,7 +172,10 @@ CertificateSet certify_variants(const ElementLibrary& library, const std::filesy
 /// certify_weak (WeakRule) into dir/weak, certify_variants into dir/variants, certify_windows
 /// (StrongRule, window_certificates.hpp) into dir/windows, certify_boundary_windows
 /// (StrongRule, boundary_certificates.hpp) into dir/boundary, certify_spread_grids
-/// (WeakRule, compositional_weak.hpp) into dir/weak_spread.
+/// (WeakRule, compositional_weak.hpp) into dir/weak_spread, certify_weak_stars and
+/// certify_weak_root_stars (weak_star_certificates.hpp) into dir/weak_stars and
+/// dir/weak_root_stars; with `near_root_stars` also certify_weak_near_root_stars into
+/// dir/weak_near_root_stars (not shipped: about 70 MB, minutes and gigabytes; see there).
 struct CertifyResult {
     std::vector<CertificateSet> sets;
     [[nodiscard]] std::size_t certificates() const;
@@ -179,6 +183,6 @@ struct CertifyResult {
 };
 /// `progress` (optional) sees each part's stages in turn (the windows: checked of all).
 CertifyResult certify_library(const ElementLibrary& library, const std::filesystem::path& dir,
-                              const Progress& progress = {});
+                              const Progress& progress = {}, bool near_root_stars = false);
 
 }  // namespace dualhex

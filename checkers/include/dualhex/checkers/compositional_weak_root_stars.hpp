@@ -15,6 +15,7 @@
 // The star is built from the inside leaves' pieces only. Computed by dualhex, not certified.
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -91,12 +92,27 @@ struct WeakNearRootStarCheck {
     [[nodiscard]] bool all_passed() const { return stars > 0 && failed == 0 && passed == stars && hits_at_reach == 0; }
 };
 
+/// What names one star of the near-surface run; labels sort member by member.
+struct WeakNearRootStarLabel {
+    int parity = 0;               ///< t: g = (t&1, t>>1&1, t>>2&1) level-m units
+    LatticePoint v;               ///< relative to g
+    std::array<int, 8> levels{};  ///< level - m per sign octant
+    RootSides sides{};            ///< the root planes through v (0 on an axis: none)
+    /// The further root planes, per axis below v (the root above) and above v (the root below).
+    std::array<std::optional<std::int64_t>, 3> below, above;
+    std::vector<int> pieces;  ///< per inside leaf (-1: no cell at v)
+    auto operator<=>(const WeakNearRootStarLabel&) const = default;
+};
+
 struct WeakNearRootStarOptions {
     unsigned parities = 0xFF;
     int max_planes = 3;  ///< at most this many root planes not through v in one combination
     int reach = 8;  ///< level-m units either side of g where a plane is tried
     long search_limit = 5'000'000;
     long stop_after = 0;
+    /// Optional: told every star that passes, with its label and its complex (the inside
+    /// leaves' whole cells at v, v at the origin). Called from several threads at once.
+    std::function<void(const WeakNearRootStarLabel&, const CellComplex&)> passed;
 };
 
 [[nodiscard]] WeakNearRootStarCheck run_weak_near_root_stars(const TransitionRule& rule, const ElementLibrary& library,

@@ -25,6 +25,7 @@
 
 namespace dualhex {
 
+class CellComplex;
 class ElementLibrary;
 
 /// What a piece at q holds: the whole cells at q, or only their faces through q (each
@@ -121,6 +122,15 @@ enum class CornerPairs {
     Never,              ///< none: a search that gives up is a failure
 };
 
+/// What names one star of the run; labels sort by parity, then v, configuration, pieces.
+struct WeakStarLabel {
+    int parity = 0;               ///< t: g = (t&1, t>>1&1, t>>2&1) level-m units
+    LatticePoint v;               ///< relative to g
+    std::array<int, 8> levels{};  ///< level - m per sign octant
+    std::vector<int> pieces;      ///< per distinct leaf at v (-1: no cell at v)
+    auto operator<=>(const WeakStarLabel&) const = default;
+};
+
 struct WeakStarOptions {
     unsigned parities = 0xFF;  ///< bit t: run parity t (g = (t&1, t>>1&1, t>>2&1))
     /// Optional: only the candidate vertices v (relative to g) it accepts (a partial run).
@@ -141,6 +151,9 @@ struct WeakStarOptions {
     /// Optional: told each pair's verdict (v relative to g, level - m per sign octant, true
     /// iff nothing failed at it) once it is checked. Called from several threads at once.
     std::function<void(const LatticePoint&, const std::array<int, 8>&, bool)> verdicts;
+    /// Optional: told every star that passes, with its label and its complex (the whole
+    /// cells at v, v moved to the origin). Called from several threads at once.
+    std::function<void(const WeakStarLabel&, const CellComplex&)> passed;
 };
 
 /// Runs it (oneTBB over the candidate vertices).
