@@ -2,8 +2,9 @@
 // configurations under the strong rule (DIR), the 487 weakly balanced ones under the weak rule
 // (DIR/weak), the 14 crossing variants (DIR/variants), the compositional windows (DIR/windows)
 // the root-boundary half windows (DIR/boundary), the eight four-level weak grids
-// (DIR/weak_spread), the weak stars (DIR/weak_stars) and the weak root-surface stars
-// (DIR/weak_root_stars), each directory with its manifest; with --near-root-stars also the
+// (DIR/weak_spread), the weak stars (DIR/weak_stars), the witness stars of the corner pair
+// (DIR/weak_corner_stars) and the weak root-surface stars (DIR/weak_root_stars), each
+// directory with its manifest; with --near-root-stars also the
 // weak stars near the root surface under Coarse (DIR/weak_near_root_stars, not shipped)
 // (format and checker: proofs/README.md). The certificates are untrusted output;
 // `dualhex-proof-checker DIR/manifest` (and DIR/weak/manifest, DIR/variants/manifest)

@@ -106,12 +106,14 @@ SpreadOutcome check_spread_grids(const ElementLibrary& library) {
 }
 
 // W11: the one pair the star search cannot finish (parity 111, v = g, the 8 leaves of level
-// m) is a corner pair, checked leaf by leaf and quadrant by quadrant.
+// m) is a corner pair, checked leaf by leaf and quadrant by quadrant, and (W14 (f)) by a
+// valid witness star for each of its quadrant tuples.
 WeakStarOptions odd_corner_pair() {
     WeakStarOptions odd;
     odd.parities = 0x80;
     odd.vertex = [](const LatticePoint& v) { return v == LatticePoint{}; };
     odd.corner_pairs = CornerPairs::Always;
+    odd.corner_witness = [](const WeakCornerLabel&, const CellComplex&) {};  // checked; nothing kept
     return odd;
 }
 
@@ -132,7 +134,8 @@ CheckOutcome check_compositional_weak() {
     const std::vector<int>& at = spread.at;
     const int spread_valid = spread.valid;
     const std::string& spread_failure = spread.failure;
-    const bool corner_ok = corner.pairs == 1 && corner.corner_pairs == 1 && corner.all_passed();
+    const bool corner_ok = corner.pairs == 1 && corner.corner_pairs == 1 && corner.all_passed() &&
+                           corner.corner_witnesses == corner.corner_quadrant_tuples;
     CheckOutcome out;
     out.status = r.all_passed() && spread_valid == 8 && corner_ok ? CheckStatus::kPass : CheckStatus::kFail;
     out.summary = "weak lemma " + std::to_string(r.lemma_plain) + "/" + std::to_string(r.lemma_contexts) +
@@ -175,7 +178,8 @@ CheckOutcome check_compositional_weak() {
     }
     report << "  W11 g=111, v = g, 8 leaves of level m (the pair the star search does not finish): "
            << (corner_ok ? "passes" : "FAILS") << " leaf by leaf (" << corner.corner_pieces << " pieces) and quadrant by quadrant ("
-           << corner.corner_quadrant_tuples << " tuples), one star whole\n";
+           << corner.corner_quadrant_tuples << " tuples), one star whole; W14 (f): " << corner.corner_witnesses
+           << " witness stars, one per quadrant tuple, valid\n";
     for (const auto& f : corner.failures) report << "  FAIL W11: " << f << '\n';
     out.details = {{"reach_octants", r.reach_octants}, {"lemma_contexts", r.lemma_contexts},
                    {"lemma_plain", r.lemma_plain}, {"visible_contexts", r.visible_contexts},
@@ -185,7 +189,8 @@ CheckOutcome check_compositional_weak() {
                    {"windows", windows}, {"star_reads", stars},
                    {"star_positions", influence.positions.size()}, {"star_pieces", influence.distinct_pieces},
                    {"star_max_relevant", influence.max_relevant()}, {"odd_corner_pair_passed", corner_ok},
-                   {"odd_corner_pair_pieces", corner.corner_pieces}, {"odd_corner_pair_quadrant_tuples", corner.corner_quadrant_tuples}};
+                   {"odd_corner_pair_pieces", corner.corner_pieces}, {"odd_corner_pair_quadrant_tuples", corner.corner_quadrant_tuples},
+                   {"odd_corner_pair_witness_stars", corner.corner_witnesses}};
     out.report = report.str();
     return out;
 }

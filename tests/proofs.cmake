@@ -2,7 +2,7 @@
 
 # The independent checker re-checks the shipped certificates (no dualhex code involved), one
 # test per manifest: elements + strong tori, weak tori, crossing variants, windows, root
-# boundary, four-level grids, weak stars, weak root-surface stars.
+# boundary, four-level grids, weak stars, the corner pair's witness stars, weak root-surface stars.
 function(dualhex_check_shipped name manifest)
   add_test(NAME ${name} COMMAND dualhex-proof-checker ${PROJECT_SOURCE_DIR}/proofs/certificates/${manifest})
   set_tests_properties(${name} PROPERTIES PASS_REGULAR_EXPRESSION "VERIFIED: ")
@@ -14,6 +14,7 @@ dualhex_check_shipped(proofs_shipped_window_certificates windows/manifest)
 dualhex_check_shipped(proofs_shipped_boundary_certificates boundary/manifest)
 dualhex_check_shipped(proofs_shipped_weak_spread_certificates weak_spread/manifest)
 dualhex_check_shipped(proofs_shipped_weak_star_certificates weak_stars/manifest)
+dualhex_check_shipped(proofs_shipped_weak_corner_star_certificates weak_corner_stars/manifest)
 dualhex_check_shipped(proofs_shipped_weak_root_star_certificates weak_root_stars/manifest)
 
 # Freshness (regenerate, compare with the manifest) and adversarial mutations.

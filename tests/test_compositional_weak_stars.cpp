@@ -18,6 +18,7 @@
 #include "dualhex/grid/refinement.hpp"
 #include "dualhex/schemes/element_library.hpp"
 #include "dualhex/schemes/weak_rule.hpp"
+#include "dualhex/topology/cell_complex.hpp"
 #include "test_weak_star_fixture.hpp"
 #include "test_wrong_rules.hpp"
 
@@ -200,9 +201,37 @@ TEST(WeakStars, TheOddPairPassesLeafByLeafAndQuadrantByQuadrant) {
                 g.search_nodes);
 }
 
-// W11 gives the star-by-star verdict at every corner pair where both run (v = g at parities
-// 000, 100 and 110: all leaves there have v as a corner), for the weak rule and for the two
-// wrong ones, which fail at some of them.
+// The odd pair by W14 (f) alone: one star per quadrant tuple, each with that tuple, each
+// valid (Lemma S6); with W11 and the witnesses told, as `dualhex certify` runs it.
+TEST(WeakStars, TheOddPairsQuadrantTuplesHaveValidWitnessStars) {
+    for (const CornerPairs how : {CornerPairs::AlwaysByWitnesses, CornerPairs::Always}) {
+        WeakStarOptions at_g;
+        at_g.parities = 0x80;
+        at_g.vertex = [](const LatticePoint& v) { return v == LatticePoint{}; };
+        at_g.corner_pairs = how;
+        std::mutex lock;
+        std::set<WeakCornerLabel> told;
+        at_g.corner_witness = [&](const WeakCornerLabel& label, const CellComplex& star) {
+            const std::lock_guard guard(lock);
+            EXPECT_TRUE(told.insert(label).second);
+            EXPECT_EQ(star.n_cells(), 8u);  // one cell at v per leaf
+        };
+        const WeakStarCheck g = run_weak_stars(WeakRule(), library(), weak_influence(), at_g);
+        for (const auto& f : g.failures) ADD_FAILURE() << f;
+        EXPECT_TRUE(g.all_passed());
+        EXPECT_EQ(g.corner_pairs, 1);
+        EXPECT_EQ(g.corner_witnesses, 2736);  // = W11's quadrant tuples
+        EXPECT_EQ(static_cast<long>(told.size()), g.corner_witnesses);
+        if (how == CornerPairs::Always) EXPECT_EQ(g.corner_quadrant_tuples, g.corner_witnesses);
+        std::set<std::pair<int, int>> quadrants;
+        for (const WeakCornerLabel& l : told) quadrants.insert({l.octant, l.other});
+        EXPECT_EQ(quadrants.size(), 12u);
+    }
+}
+
+// W11 (S4) and W14 (f)'s witnesses (S6) each give the star-by-star verdict at every corner
+// pair where all run (v = g at parities 000, 100 and 110: all leaves there have v as a
+// corner), for the weak rule and for the two wrong ones, which fail at some of them.
 TEST(WeakStars, CornerPairsGiveTheStarByStarVerdicts) {
     using Verdicts = std::map<std::pair<LatticePoint, std::array<int, 8>>, bool>;
     const auto verdicts = [](const TransitionRule& rule, const WeakStarInfluence& influence, unsigned parity, CornerPairs how) {
@@ -233,7 +262,9 @@ TEST(WeakStars, CornerPairsGiveTheStarByStarVerdicts) {
         for (const unsigned parity : {1U, 2U, 8U}) {
             const Verdicts by_stars = verdicts(rule, *rules[k].second, parity, CornerPairs::Never);
             const Verdicts by_corner = verdicts(rule, *rules[k].second, parity, CornerPairs::Always);
+            const Verdicts by_witnesses = verdicts(rule, *rules[k].second, parity, CornerPairs::AlwaysByWitnesses);
             EXPECT_EQ(by_corner, by_stars) << "rule " << k << " parity bit " << parity;
+            EXPECT_EQ(by_witnesses, by_stars) << "rule " << k << " parity bit " << parity << " (W14 (f), Lemma S6)";
             for (const auto& [pair, passed] : by_stars) failing += passed ? 0 : 1;
             pairs += static_cast<long>(by_stars.size());
         }

@@ -34,7 +34,7 @@ TEST(ProofsCertificates, ShippedCertificatesAreCurrent) {
     // elements or a rule changed: run `dualhex certify --out proofs/certificates --force`.
     const fs::path dir = temp_dir("fresh");
     const CertifyResult result = certify_library(ElementLibrary::load_default(), dir);
-    ASSERT_EQ(result.sets.size(), 8u);
+    ASSERT_EQ(result.sets.size(), 9u);
     EXPECT_EQ(result.sets[0].covers, 256);
     EXPECT_EQ(result.sets[1].covers, 487);
     EXPECT_EQ(result.sets[2].covers, 14);
@@ -42,7 +42,8 @@ TEST(ProofsCertificates, ShippedCertificatesAreCurrent) {
     EXPECT_EQ(result.sets[4].covers, 3368);   // the root-boundary half windows, coarse + mirror
     EXPECT_EQ(result.sets[5].covers, 8);      // the four-level grids, one per corner
     EXPECT_EQ(result.sets[6].covers, 163417); // the weak stars, W10's count (proofs/README.md)
-    EXPECT_EQ(result.sets[7].covers, 7048);   // the weak root-surface stars, coarse + mirror (W13)
+    EXPECT_EQ(result.sets[7].covers, 2736);   // the odd corner pair's quadrant tuples (W11), a witness star each
+    EXPECT_EQ(result.sets[8].covers, 7048);   // the weak root-surface stars, coarse + mirror (W13)
     for (const CertificateSet& set : result.sets) {
         const fs::path shipped = kShipped / fs::relative(set.directory, dir);
         EXPECT_EQ(read(set.directory / "manifest"), read(shipped / "manifest"))

@@ -157,7 +157,7 @@ std::pair<std::size_t, std::size_t> tamper_with_set(const std::string& set) {
 }
 
 TEST(ProofsCertificates, WeakAndVariantManifestTampering) {
-    for (const char* set : {"weak", "variants", "windows", "boundary", "weak_spread", "weak_stars", "weak_root_stars"}) {
+    for (const char* set : {"weak", "variants", "windows", "boundary", "weak_spread", "weak_stars", "weak_corner_stars", "weak_root_stars"}) {
         const auto [tried, rejected] = tamper_with_set(set);
         std::cout << "[ tampering ] " << set << ": tried " << tried << ", rejected " << rejected << '\n';
         EXPECT_EQ(rejected, tried);

@@ -191,7 +191,9 @@ CertifyResult certify_library(const ElementLibrary& library, const std::filesyst
     result.sets.push_back(certify_boundary_windows(StrongRule{}, library, dir / "boundary"));
     result.sets.push_back(certify_spread_grids(library, dir / "weak_spread"));
     report_progress(progress, "weak stars", 0, 1);
-    result.sets.push_back(certify_weak_stars(library, dir / "weak_stars"));
+    auto [stars, corner] = certify_weak_stars(library, dir / "weak_stars", dir / "weak_corner_stars");
+    result.sets.push_back(std::move(stars));
+    result.sets.push_back(std::move(corner));
     report_progress(progress, "weak root stars", 0, 1);
     result.sets.push_back(certify_weak_root_stars(library, dir / "weak_root_stars"));
     if (near_root_stars) {

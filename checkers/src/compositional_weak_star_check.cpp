@@ -192,6 +192,36 @@ std::string describe(const std::array<int, 3>& parity, const Pair& p, const std:
     return os.str();
 }
 
+// A corner pair: W11's pieces and quadrants (not with AlwaysByWitnesses), then W14 (f)'s
+// witness stars, checked, when they are the check or options.corner_witness wants them
+// (told with `pair`'s fields and the tuple's). The first reason it fails, or nothing.
+std::optional<std::string> corner_defect(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
+                                         const PieceCubes& cubes, const Pair& p, const LatticePoint& v, const WeakStarOptions& options,
+                                         const WeakCornerLabel& pair, WeakStarCheck& local) {
+    const bool by_witnesses = options.corner_pairs == CornerPairs::AlwaysByWitnesses;
+    try {
+        if (!by_witnesses) {
+            const CornerCheck c = check_corner_pair(inf, rule, cache, cubes, p, v, options.search_limit);
+            local.search_nodes += c.search_nodes;
+            local.corner_pieces += c.pieces;
+            local.corner_quadrant_tuples += c.quadrant_tuples;
+            if (!c.passed) return "W11: " + c.defect;
+        }
+        if (!by_witnesses && !options.corner_witness) return std::nullopt;
+        std::optional<std::string> why;
+        local.corner_witnesses += corner_witness_stars(
+            inf, rule, cache, cubes, p, v, options.search_limit,
+            [&](int o, int o2, const std::vector<int>& pieces, const ConfigurationComplex& star) {
+                const ConfigurationReport r = detail::analyse(star, at_v, away_from_v);
+                if (!r.ok() || r.checked_vertices != 1) why = "a witness star (W14 (f)): " + r.summary();
+                else if (options.corner_witness) options.corner_witness({pair.parity, pair.v, pair.levels, o, o2, pieces}, star.complex);
+            });
+        return why;
+    } catch (const std::exception& e) {  // a search gave up, or the rule threw
+        return std::string(e.what());
+    }
+}
+
 }  // namespace
 
 WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& library, const WeakStarInfluence& inf,
@@ -236,19 +266,14 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
                     };
                     const bool corner = options.corner_pairs != CornerPairs::Never && is_corner_pair(inf, p, v);
                     const auto by_corner = [&] {
-                        try {
-                            const CornerCheck c = check_corner_pair(inf, rule, cache, *cubes, p, v, options.search_limit);
-                            local.search_nodes += c.search_nodes;
-                            local.corner_pieces += c.pieces;
-                            local.corner_quadrant_tuples += c.quadrant_tuples;
-                            if (c.passed) ++local.corner_pairs;
-                            else fail(std::vector<int>(p.leaves.size(), -1), "corner pair (W11): " + c.defect);
-                        } catch (const std::exception& e) {  // the search gave up, or the rule threw
-                            fail(std::vector<int>(p.leaves.size(), -1), std::string("corner pair (W11): ") + e.what());
-                        }
+                        const WeakCornerLabel pair{t, v - g, levels, 0, 0, {}};
+                        if (const auto why = corner_defect(inf, rule, cache, *cubes, p, v, options, pair, local))
+                            fail(std::vector<int>(p.leaves.size(), -1), "corner pair: " + *why);
+                        else ++local.corner_pairs;
                         verdict();
                     };
-                    if (corner && options.corner_pairs == CornerPairs::Always) return by_corner();
+                    const bool always = options.corner_pairs == CornerPairs::Always || options.corner_pairs == CornerPairs::AlwaysByWitnesses;
+                    if (corner && always) return by_corner();
                     Stars stars;
                     try {
                         stars = options.reference_product ? stars_by_product(inf, p, local.assignments)
@@ -286,6 +311,7 @@ WeakStarCheck run_weak_stars(const TransitionRule& rule, const ElementLibrary& l
             result.corner_pairs += local.corner_pairs;
             result.corner_pieces += local.corner_pieces;
             result.corner_quadrant_tuples += local.corner_quadrant_tuples;
+            result.corner_witnesses += local.corner_witnesses;
             result.stars += local.stars;
             result.empty += local.empty;
             result.joint_bound += local.joint_bound;

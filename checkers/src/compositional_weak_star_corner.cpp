@@ -21,6 +21,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <variant>
 
 #include "dualhex/topology/incidence.hpp"
 #include "dualhex/topology/validation.hpp"
@@ -137,19 +138,32 @@ bool is_corner_pair(const WeakStarInfluence& inf, const Pair& p, const LatticePo
            std::all_of(p.leaves.begin(), p.leaves.end(), [&](const LeafBits& b) { return octant_of(inf, b, v_world).has_value(); });
 }
 
-CornerCheck check_corner_pair(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
-                              const PieceCubes& cubes, const Pair& p, const LatticePoint& v, long limit) {
-    CornerCheck out;
-    std::array<std::size_t, 8> leaf_of{};  // sign octant (bit a: +a) -> leaf index
+namespace {
+
+// Sign octant (bit a: +a) -> leaf index, or the reason the pair is no corner pair.
+std::variant<std::array<std::size_t, 8>, std::string> leaf_of_octant(const WeakStarInfluence& inf, const Pair& p,
+                                                                     const LatticePoint& v) {
+    std::array<std::size_t, 8> leaf_of{};
     std::set<int> octants;
     for (std::size_t n = 0; n < p.leaves.size(); ++n) {
         const auto sign = octant_of(inf, p.leaves[n], v);
-        if (!sign) return out.fail("leaf " + std::to_string(n) + " does not have v as a corner");
+        if (!sign) return "leaf " + std::to_string(n) + " does not have v as a corner";
         const int o = ((*sign)[0] > 0) | ((*sign)[1] > 0) << 1 | ((*sign)[2] > 0) << 2;
         octants.insert(o);
         leaf_of[static_cast<std::size_t>(o)] = n;
     }
-    if (p.leaves.size() != 8 || octants.size() != 8) return out.fail("not 8 leaves, one per octant");
+    if (p.leaves.size() != 8 || octants.size() != 8) return std::string("not 8 leaves, one per octant");
+    return leaf_of;
+}
+
+}  // namespace
+
+CornerCheck check_corner_pair(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
+                              const PieceCubes& cubes, const Pair& p, const LatticePoint& v, long limit) {
+    CornerCheck out;
+    const auto octants = leaf_of_octant(inf, p, v);
+    if (const auto* why = std::get_if<std::string>(&octants)) return out.fail(*why);
+    const auto& leaf_of = std::get<std::array<std::size_t, 8>>(octants);
     const auto complex_of = [&](const Pair& sub, const std::vector<int>& contexts) {
         return build_star(inf, rule, cache, sub, v, contexts).complex;
     };
@@ -186,6 +200,33 @@ CornerCheck check_corner_pair(const WeakStarInfluence& inf, const TransitionRule
     if (!r.ok() || r.checked_vertices != 1) return out.fail("the representative star: " + r.summary());
     out.passed = true;
     return out;
+}
+
+long corner_witness_stars(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
+                          const PieceCubes& cubes, const Pair& p, const LatticePoint& v, long limit,
+                          const std::function<void(int, int, const std::vector<int>&, const ConfigurationComplex&)>& tell) {
+    const auto octants = leaf_of_octant(inf, p, v);
+    if (const auto* why = std::get_if<std::string>(&octants)) throw std::invalid_argument("corner_witness_stars: " + *why);
+    const auto& leaf_of = std::get<std::array<std::size_t, 8>>(octants);
+    long nodes = 0, told = 0;
+    for (int o = 0; o < 8; ++o)
+        for (int c = 0; c < 3; ++c) {
+            const int o2 = o ^ (1 << c);
+            if (o2 < o) continue;
+            std::vector<std::size_t> order{leaf_of[static_cast<std::size_t>(o)], leaf_of[static_cast<std::size_t>(o2)]};
+            for (std::size_t n = 0; n < 8; ++n)
+                if (n != order[0] && n != order[1]) order.push_back(n);
+            const Pair two = restricted(p, {order[0], order[1]}), all = restricted(p, order);
+            for (const auto& [pieces, contexts] : stars_by_search(cubes, two, nodes, limit)) {
+                // Lemma S3: the two leaves' pieces are a projection of a star, which the search
+                // with them first therefore finds
+                const Stars witness = stars_by_search(cubes, all, nodes, limit, 1, pieces);
+                if (witness.empty()) throw std::logic_error("corner_witness_stars: a quadrant tuple no star extends");
+                tell(o, o2, pieces, build_star(inf, rule, cache, all, v, witness.begin()->second));
+                ++told;
+            }
+        }
+    return told;
 }
 
 }  // namespace dualhex::weak_stars

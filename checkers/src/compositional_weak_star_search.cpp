@@ -125,8 +125,8 @@ int branch_digit(const PieceCubes::Position& table, int idx, const std::vector<i
 // so it is skipped.
 class Search {
 public:
-    Search(const PieceCubes& cubes, const Pair& p, long limit, std::size_t max_stars)
-        : cubes_(cubes), vars_(variables_of(p)), limit_(limit), max_stars_(max_stars) {
+    Search(const PieceCubes& cubes, const Pair& p, long limit, std::size_t max_stars, const std::vector<int>& first_pieces)
+        : cubes_(cubes), vars_(variables_of(p)), limit_(limit), max_stars_(max_stars), first_(first_pieces) {
         if (vars_.leaves.size() > 8) throw std::invalid_argument("weak star search: more than 8 leaves at one vertex");
         seen_.resize(vars_.leaves.size());
         pieces_.resize(vars_.leaves.size());
@@ -207,6 +207,7 @@ private:
             throw SearchTooLarge("search over " + std::to_string(limit_) + " nodes; states per leaf" + states + "; stars so far " +
                                  std::to_string(out_.size()) + ", free statuses " + std::to_string(vars_.implies.size()));
         }
+        if (n < first_.size() && piece != first_[n]) return;
         pieces_[n] = piece;
         contexts_[n] = ctx;
         visit(n + 1, a, prefix << 9 | static_cast<std::uint64_t>(piece + 3));
@@ -218,6 +219,7 @@ private:
     const Variables vars_;
     const long limit_;
     const std::size_t max_stars_;
+    const std::vector<int> first_;
     long nodes_ = 0;
     std::vector<std::unordered_set<Key, KeyHash>> seen_;
     std::vector<int> pieces_, contexts_;
@@ -233,8 +235,9 @@ PieceCubes piece_cubes(const WeakStarInfluence& inf) {
     return out;
 }
 
-Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit, std::size_t max_stars) {
-    return Search(cubes, p, limit, max_stars).run(nodes);
+Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit, std::size_t max_stars,
+                      const std::vector<int>& first_pieces) {
+    return Search(cubes, p, limit, max_stars, first_pieces).run(nodes);
 }
 
 }  // namespace dualhex::weak_stars

@@ -4,6 +4,7 @@
 #include "dualhex/checkers/weak_star_certificates.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -39,6 +40,11 @@ std::string numbers(const auto& xs) {
 std::string text(const WeakStarLabel& l) {
     return "parity " + std::to_string(l.parity) + ", v - g = (" + std::to_string(l.v.x) + ", " + std::to_string(l.v.y) +
            ", " + std::to_string(l.v.z) + "), levels - m" + numbers(l.levels) + ", pieces" + numbers(l.pieces);
+}
+std::string text(const WeakCornerLabel& l) {
+    return "parity " + std::to_string(l.parity) + ", v - g = (" + std::to_string(l.v.x) + ", " + std::to_string(l.v.y) +
+           ", " + std::to_string(l.v.z) + "), levels - m" + numbers(l.levels) + ", octants " + std::to_string(l.octant) +
+           " and " + std::to_string(l.other) + ", their pieces" + numbers(l.pieces);
 }
 std::string text(const RootStarLabel& l) {
     return std::string(l.policy == 0 ? "coarse" : "mirror") + ", sides" + numbers(l.sides) + ", parity" +
@@ -134,14 +140,23 @@ private:
 
 }  // namespace
 
-CertificateSet certify_weak_stars(const ElementLibrary& library, const std::filesystem::path& dir, std::size_t per_file) {
+WeakStarCertificates certify_weak_stars(const ElementLibrary& library, const std::filesystem::path& dir,
+                                        const std::filesystem::path& corner_dir, std::size_t per_file) {
     const WeakRule rule;
     StarClasses<WeakStarLabel> classes;
+    StarClasses<WeakCornerLabel> corner;
+    std::atomic<long> witnesses{0};
     WeakStarOptions options;
     options.passed = [&](const WeakStarLabel& label, const CellComplex& star) { classes.add(label, star); };
+    options.corner_witness = [&](const WeakCornerLabel& label, const CellComplex& star) {
+        corner.add(label, star);
+        ++witnesses;
+    };
     const WeakStarCheck run = run_weak_stars(rule, library, weak_star_influence(rule, library), options);
     if (!run.all_passed()) throw std::runtime_error("certify_weak_stars: the star run does not pass");
-    return classes.write(dir, run.stars, per_file, "the whole cells at a vertex v of a weak-rule installation, v moved to the origin");
+    return {classes.write(dir, run.stars, per_file, "the whole cells at a vertex v of a weak-rule installation, v moved to the origin"),
+            corner.write(corner_dir, witnesses.load(), per_file,
+                         "a star of a corner pair checked by W11 that has the quadrant tuple of the label, v moved to the origin")};
 }
 
 CertificateSet certify_weak_root_stars(const ElementLibrary& library, const std::filesystem::path& dir, std::size_t per_file) {

@@ -124,8 +124,10 @@ PieceCubes piece_cubes(const WeakStarInfluence& inf);
 struct SearchTooLarge : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
-/// `max_stars` > 0: stop once that many stars are found.
-Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit, std::size_t max_stars = 0);
+/// `max_stars` > 0: stop once that many stars are found. `first_pieces`: only the stars whose
+/// first leaves have these pieces (the others are not searched).
+Stars stars_by_search(const PieceCubes& cubes, const Pair& p, long& nodes, long limit, std::size_t max_stars = 0,
+                      const std::vector<int>& first_pieces = {});
 
 /// The star: the cells at v of the leaves' elements (or plain cubes), v at the origin;
 /// contexts[n] is leaf n's visible context.
@@ -159,5 +161,12 @@ struct CornerCheck {
 /// (searches with `limit` nodes each; SearchTooLarge propagates).
 CornerCheck check_corner_pair(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
                               const PieceCubes& cubes, const Pair& p, const LatticePoint& v_world, long limit);
+
+/// W14 (f): for every quadrant tuple of a corner pair (octants o < o2 across a quadrant, the
+/// two leaves' pieces), one star of the pair with those pieces, found by the search with
+/// the two leaves first: tell(o, o2, the two pieces, the star). Returns how many.
+long corner_witness_stars(const WeakStarInfluence& inf, const TransitionRule& rule, detail::TemplateCache& cache,
+                          const PieceCubes& cubes, const Pair& p, const LatticePoint& v_world, long limit,
+                          const std::function<void(int, int, const std::vector<int>&, const ConfigurationComplex&)>& tell);
 
 }  // namespace dualhex::weak_stars

@@ -173,8 +173,9 @@ CertificateSet certify_variants(const ElementLibrary& library, const std::filesy
 /// (StrongRule, window_certificates.hpp) into dir/windows, certify_boundary_windows
 /// (StrongRule, boundary_certificates.hpp) into dir/boundary, certify_spread_grids
 /// (WeakRule, compositional_weak.hpp) into dir/weak_spread, certify_weak_stars and
-/// certify_weak_root_stars (weak_star_certificates.hpp) into dir/weak_stars and
-/// dir/weak_root_stars; with `near_root_stars` also certify_weak_near_root_stars into
+/// certify_weak_root_stars (weak_star_certificates.hpp) into dir/weak_stars,
+/// dir/weak_corner_stars and dir/weak_root_stars; with `near_root_stars` also
+/// certify_weak_near_root_stars into
 /// dir/weak_near_root_stars (not shipped: about 70 MB, minutes and gigabytes; see there).
 struct CertifyResult {
     std::vector<CertificateSet> sets;

@@ -110,6 +110,7 @@ struct WeakStarCheck {
     /// star by star (WeakStarOptions::corner_pairs); the pieces (P1) and quadrant tuples
     /// (P2) it checked. A corner pair that fails counts in `failed`.
     long corner_pairs = 0, corner_pieces = 0, corner_quadrant_tuples = 0;
+    long corner_witnesses = 0;  ///< W14 (f)'s witness stars checked (one per quadrant tuple)
     std::vector<std::string> failures;  ///< the first few, described
     [[nodiscard]] bool all_passed() const { return (stars > 0 || corner_pairs > 0) && failed == 0 && passed == stars; }
 };
@@ -120,6 +121,9 @@ enum class CornerPairs {
     WhenSearchGivesUp,  ///< only where the star search exceeds search_limit
     Always,             ///< every corner pair
     Never,              ///< none: a search that gives up is a failure
+    /// Every corner pair, by W14 (f)'s witness stars alone (Lemma S6) instead of W11 (S4):
+    /// for the comparisons.
+    AlwaysByWitnesses,
 };
 
 /// What names one star of the run; labels sort by parity, then v, configuration, pieces.
@@ -129,6 +133,18 @@ struct WeakStarLabel {
     std::array<int, 8> levels{};  ///< level - m per sign octant
     std::vector<int> pieces;      ///< per distinct leaf at v (-1: no cell at v)
     auto operator<=>(const WeakStarLabel&) const = default;
+};
+
+/// What names one quadrant tuple of a corner pair checked by W11: the pair (parity, v - g,
+/// configuration), the two octants across the quadrant (bit a: +a; octant < other) and the
+/// two leaves' pieces.
+struct WeakCornerLabel {
+    int parity = 0;
+    LatticePoint v;
+    std::array<int, 8> levels{};
+    int octant = 0, other = 0;
+    std::vector<int> pieces;
+    auto operator<=>(const WeakCornerLabel&) const = default;
 };
 
 struct WeakStarOptions {
@@ -154,6 +170,10 @@ struct WeakStarOptions {
     /// Optional: told every star that passes, with its label and its complex (the whole
     /// cells at v, v moved to the origin). Called from several threads at once.
     std::function<void(const WeakStarLabel&, const CellComplex&)> passed;
+    /// Optional: for every corner pair W11 passes, every quadrant tuple with one star of the
+    /// pair that has it (corner_witness_stars, W14 (f)), checked like a star first (one that
+    /// fails fails the pair). Called from several threads at once.
+    std::function<void(const WeakCornerLabel&, const CellComplex&)> corner_witness;
 };
 
 /// Runs it (oneTBB over the candidate vertices).

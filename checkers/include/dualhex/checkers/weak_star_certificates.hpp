@@ -10,6 +10,10 @@ namespace dualhex {
 
 class ElementLibrary;
 
+struct WeakStarCertificates {
+    CertificateSet stars, corner;
+};
+
 /// Runs run_weak_stars (WeakRule, every parity) and writes into `dir`:
 ///   stars-AAAA-BBBB.cert   one certificate of kind star per class (domain point 0 0 0: the
 ///                          whole cells at v, v at the origin), `covers` its members
@@ -18,9 +22,11 @@ class ElementLibrary;
 /// Two stars share a class iff one is the exact image of the other under one of the 48
 /// symmetries about v (equal smallest oriented forms: the key is the proof). The class's
 /// representative is its member of smallest label. A corner pair W11 checks leaf by leaf
-/// has no stars here (it is not enumerated star by star). std::runtime_error if a star fails.
-CertificateSet certify_weak_stars(const ElementLibrary& library, const std::filesystem::path& dir,
-                                  std::size_t per_file = 500);
+/// has no stars there (it is not enumerated star by star); into `corner_dir`, in the same
+/// way, a witness star per quadrant tuple of every such pair (corner_witness_stars; labels:
+/// WeakCornerLabel order, covers = the quadrant tuples). std::runtime_error if a star fails.
+WeakStarCertificates certify_weak_stars(const ElementLibrary& library, const std::filesystem::path& dir,
+                                        const std::filesystem::path& corner_dir, std::size_t per_file = 500);
 
 /// Runs run_weak_root_stars (WeakRule, `Coarse`, then `Mirror`) and writes into `dir`, as
 /// certify_weak_stars: every star of a vertex v on the root surface (the inside leaves' cells
