@@ -139,6 +139,7 @@ CheckRegistry default_checks() {
     add_weak_checks(r);
     add_compositional_checks(r);
     add_weak_root_checks(r);
+    add_weak_star_checks(r);
     return r;
 }
 

@@ -24,6 +24,8 @@ struct Check {
     std::string name;         ///< stable identifier, e.g. "symmetry.group-order"
     std::string description;  ///< what is checked, one line
     std::function<CheckOutcome()> run;  ///< may throw: reported as FAIL with the message
+    /// A long exhaustive run: only when --only names it (listed, not in the default run).
+    bool on_request = false;
 };
 
 class CheckRegistry {
@@ -45,6 +47,7 @@ void add_variant_checks(CheckRegistry& registry);  // verify_variants.cpp
 void add_weak_checks(CheckRegistry& registry);    // verify_weak.cpp
 void add_compositional_checks(CheckRegistry& registry);  // verify_compositional.cpp
 void add_weak_root_checks(CheckRegistry& registry);      // verify_weak_root.cpp
+void add_weak_star_checks(CheckRegistry& registry);      // verify_weak_stars.cpp
 
 /// Every check that exists so far, in run order.
 CheckRegistry default_checks();
