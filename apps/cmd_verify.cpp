@@ -41,28 +41,20 @@ double process_cpu_seconds() {
     return sec(u.ru_utime) + sec(u.ru_stime);
 }
 
-// Without --only every check but those on request; with it, those whose name contains one.
-bool selected(const Check& c, const std::vector<std::string>& only) {
-    if (only.empty()) return !c.on_request;
-    for (const auto& s : only)
-        if (c.name.find(s) != std::string::npos) return true;
-    return false;
-}
-
 void run_verify(const VerifyOptions& opt) {
     const ThreadLimit limit(opt.threads);
     const CheckRegistry registry = default_checks();
     const bool any = std::any_of(registry.checks().begin(), registry.checks().end(),
-                                 [&](const Check& c) { return selected(c, opt.only); });
+                                 [&](const Check& c) { return is_selected(c, opt.only); });
     if (!any) throw UsageError("verify: no check matches --only (see dualhex verify --list)");
     if (opt.list) {
         nlohmann::json list = nlohmann::json::array();
         for (const auto& c : registry.checks()) {
-            if (!opt.only.empty() && !selected(c, opt.only)) continue;  // the list shows those on request too
+            if (!opt.only.empty() && !is_selected(c, opt.only)) continue;  // the list shows those on request too
             if (opt.json)
                 list.push_back({{"name", c.name}, {"description", c.description}, {"on_request", c.on_request}});
             else
-                std::cout << c.name << "  " << c.description << (c.on_request ? " [on request: --only]" : "") << '\n';
+                std::cout << c.name << "  " << c.description << (c.on_request ? " [on request: --only NAME]" : "") << '\n';
         }
         if (opt.json) print_json({{"checks", list}});
         return;
@@ -74,14 +66,14 @@ void run_verify(const VerifyOptions& opt) {
     // The bar counts the checks run of those selected; the table rows print over it.
     ProgressBar bar = ProgressBar::for_stderr(opt.json, opt.no_progress);
     const auto n_selected = static_cast<std::size_t>(std::count_if(
-        registry.checks().begin(), registry.checks().end(), [&](const Check& c) { return selected(c, opt.only); }));
+        registry.checks().begin(), registry.checks().end(), [&](const Check& c) { return is_selected(c, opt.only); }));
     std::size_t n_run = 0;
     nlohmann::json checks = nlohmann::json::array();
     int passed = 0, failed = 0, skipped = 0;
     // Summary blocks "strong" and "weak" from the scheme checks' details.
     nlohmann::json blocks = {{"strong", nlohmann::json::object()}, {"weak", nlohmann::json::object()}};
     for (const auto& c : registry.checks()) {
-        if (!selected(c, opt.only)) continue;
+        if (!is_selected(c, opt.only)) continue;
         bar.update(c.name, n_run++, n_selected);
         const auto t0 = std::chrono::steady_clock::now();
         const double cpu0 = process_cpu_seconds();
@@ -166,7 +158,7 @@ void register_verify(CLI::App& app) {
     add_json_flag(*sub, opt->json);
     sub->add_flag("--list", opt->list, "List the checks instead of running them");
     sub->add_option("--only", opt->only, "Run only checks whose name contains this text (repeatable); the long checks marked "
-                    "'on request' in --list run only so");
+                    "'on request' in --list run only when it is their exact name");
     sub->add_option("--certify", opt->certify,
                     "After a passing run, write certificates (as `dualhex certify`) into DIR and DIR/{weak,variants,windows,boundary,weak_spread}");
     sub->add_flag("--force", opt->force, "With --certify: write into DIR even if it is not empty");

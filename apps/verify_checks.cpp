@@ -129,6 +129,12 @@ void add_grid_checks(CheckRegistry& registry) {
                   }});
 }
 
+bool is_selected(const Check& c, const std::vector<std::string>& only) {
+    for (const auto& s : only)
+        if (c.on_request ? c.name == s : c.name.find(s) != std::string::npos) return true;
+    return only.empty() && !c.on_request;
+}
+
 CheckRegistry default_checks() {
     CheckRegistry r;
     add_symmetry_checks(r);

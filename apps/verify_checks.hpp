@@ -24,9 +24,14 @@ struct Check {
     std::string name;         ///< stable identifier, e.g. "symmetry.group-order"
     std::string description;  ///< what is checked, one line
     std::function<CheckOutcome()> run;  ///< may throw: reported as FAIL with the message
-    /// A long exhaustive run: only when --only names it (listed, not in the default run).
+    /// A long exhaustive run: only when --only gives its exact name (listed, not in the default run).
     bool on_request = false;
 };
+
+/// Whether a run with `only` (empty: the default run) runs c: without --only every check but
+/// those on request; with it, those whose name contains one of the texts, and those on
+/// request whose name is one of them (so `--only proofs` starts no long run).
+[[nodiscard]] bool is_selected(const Check& c, const std::vector<std::string>& only);
 
 class CheckRegistry {
 public:

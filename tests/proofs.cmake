@@ -59,7 +59,8 @@ if(DUALHEX_FUZZ)
   add_custom_command(OUTPUT ${fuzz_dir}/fuzz-seeds/manifest
     COMMAND ${CMAKE_COMMAND} -DSHIPPED=${PROJECT_SOURCE_DIR}/proofs/certificates -DOUT=${fuzz_dir}/fuzz-seeds
             -P ${PROJECT_SOURCE_DIR}/proofs/fuzz/make_seeds.cmake
-    DEPENDS ${PROJECT_SOURCE_DIR}/proofs/fuzz/make_seeds.cmake ${PROJECT_SOURCE_DIR}/proofs/certificates/elements.cert VERBATIM)
+    DEPENDS ${PROJECT_SOURCE_DIR}/proofs/fuzz/make_seeds.cmake ${PROJECT_SOURCE_DIR}/proofs/certificates/elements.cert
+            ${PROJECT_SOURCE_DIR}/proofs/certificates/weak_stars/stars-0000-0499.cert VERBATIM)
   add_custom_target(dualhex-checker-fuzz ALL DEPENDS ${fuzz_bin} ${fuzz_dir}/fuzz-seeds/manifest)
   file(MAKE_DIRECTORY ${fuzz_dir}/fuzz-corpus ${fuzz_dir}/fuzz-artifacts)
   add_test(NAME proofs_checker_fuzz COMMAND ${fuzz_bin} -max_total_time=45 -timeout=10 -rss_limit_mb=2048 -max_len=8192

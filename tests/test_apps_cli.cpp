@@ -140,6 +140,12 @@ TEST_F(Cli, VerifyOnlyAndList) {
         EXPECT_EQ(j.at("failed").get<int>(), 0);
     }
     EXPECT_EQ(on_request, 2u);  // proofs.weak_stars, proofs.weak_near_root_surface
+    // a substring of their names selects the other checks only
+    const auto some = nlohmann::json::parse(run({"verify", "--list", "--json", "--only", "proofs.weak"}).out).at("checks");
+    std::size_t long_ones = 0;
+    for (const auto& c : some) long_ones += c.at("on_request").get<bool>();
+    EXPECT_EQ(long_ones, 0u);
+    EXPECT_GE(some.size(), 2u);  // weak_balance, weak_root_boundary
 }
 
 TEST_F(Cli, VerifyTableHasSummary) {

@@ -222,6 +222,8 @@ long corner_witness_stars(const WeakStarInfluence& inf, const TransitionRule& ru
                 // with them first therefore finds
                 const Stars witness = stars_by_search(cubes, all, nodes, limit, 1, pieces);
                 if (witness.empty()) throw std::logic_error("corner_witness_stars: a quadrant tuple no star extends");
+                if (!std::equal(pieces.begin(), pieces.end(), witness.begin()->first.begin()))
+                    throw std::logic_error("corner_witness_stars: the star found does not have the quadrant tuple");
                 tell(o, o2, pieces, build_star(inf, rule, cache, all, v, witness.begin()->second));
                 ++told;
             }

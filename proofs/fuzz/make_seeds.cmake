@@ -1,5 +1,6 @@
 # cmake -DSHIPPED=proofs/certificates -DOUT=dir -P make_seeds.cmake: the fuzz seed corpus, one
-# file per shipped element certificate, the smallest strong torus, and the shipped manifest.
+# file per shipped element certificate, the smallest strong torus, the first weak star and the
+# shipped manifest.
 file(MAKE_DIRECTORY ${OUT})
 file(READ ${SHIPPED}/elements.cert text)
 string(REPLACE "dualhex-certificate 2\n" ";dualhex-certificate 2\n" parts "${text}")
@@ -15,5 +16,10 @@ string(FIND "${torus}" "\nend\n" end)
 math(EXPR end "${end} + 5")
 string(SUBSTRING "${torus}" 0 ${end} torus)
 file(WRITE ${OUT}/torus-0.cert "${torus}")
+file(READ ${SHIPPED}/weak_stars/stars-0000-0499.cert star LIMIT 8000)  # the first star (kind star)
+string(FIND "${star}" "\nend\n" end)
+math(EXPR end "${end} + 5")
+string(SUBSTRING "${star}" 0 ${end} star)
+file(WRITE ${OUT}/star-0.cert "${star}")
 file(READ ${SHIPPED}/manifest manifest)
 file(WRITE ${OUT}/manifest "${manifest}")

@@ -16,13 +16,6 @@
 namespace dualhex::python {
 namespace {
 
-bool selected(const std::string& name, const std::vector<std::string>& only) {
-    if (only.empty()) return true;
-    for (const auto& s : only)
-        if (name.find(s) != std::string::npos) return true;
-    return false;
-}
-
 struct Ran {
     const app::Check* check = nullptr;
     app::CheckOutcome outcome;
@@ -33,7 +26,7 @@ struct Ran {
 std::vector<Ran> run_checks(const app::CheckRegistry& registry, const std::vector<std::string>& only) {
     std::vector<Ran> ran;
     for (const auto& c : registry.checks()) {
-        if (!selected(c.name, only)) continue;
+        if (!app::is_selected(c, only)) continue;
         Ran r{&c, {}, 0};
         const auto t0 = std::chrono::steady_clock::now();
         try {
@@ -58,7 +51,7 @@ py::dict verify_py(const std::optional<std::variant<std::string, std::vector<std
     const std::vector<std::string> only = only_list(only_arg);
     const app::CheckRegistry registry = app::default_checks();
     bool any = false;
-    for (const auto& c : registry.checks()) any = any || selected(c.name, only);
+    for (const auto& c : registry.checks()) any = any || app::is_selected(c, only);
     if (!any) throw std::invalid_argument("verify: no check matches only= (see dualhex.list_checks())");
     std::vector<Ran> ran;
     const auto t0 = std::chrono::steady_clock::now();
@@ -100,6 +93,7 @@ py::list list_checks() {
         py::dict d;
         d["name"] = c.name;
         d["description"] = c.description;
+        d["on_request"] = c.on_request;
         l.append(d);
     }
     return l;
@@ -143,7 +137,7 @@ void bind_verify(py::module_& m) {
           "Runs the checks of `dualhex verify` (only: a name substring or a list of them) and returns the report "
           "as a dict: ok, passed, failed, skipped, seconds, checks [{name, description, status, ok, summary, "
           "seconds, details, report}].");
-    m.def("list_checks", &list_checks, "The registered checks: [{name, description}].");
+    m.def("list_checks", &list_checks, "The registered checks: [{name, description, on_request}] (on request: run only when only= gives their exact name).");
     m.def(
         "elements_directory",
         []() -> py::object {

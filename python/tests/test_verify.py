@@ -10,7 +10,7 @@ def test_the_registry_is_the_command_lines(cli):
 
 def test_verify_runs_every_check_and_passes(cli):
     r = dualhex.verify()
-    names = [c["name"] for c in dualhex.list_checks()]
+    names = [c["name"] for c in dualhex.list_checks() if not c["on_request"]]  # the long ones: only when named
     assert [c["name"] for c in r["checks"]] == names
     failing = [(c["name"], c["summary"]) for c in r["checks"] if not c["ok"]]
     assert r["ok"] and not failing and r["failed"] == 0
