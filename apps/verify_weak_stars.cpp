@@ -25,7 +25,7 @@ CheckOutcome check_weak_stars() {
             << r.corner_pairs << " corner pair(s) by W11 with " << r.corner_witnesses
             << " valid witness stars (certified: proofs/certificates/weak_stars, weak_corner_stars)";
     report << "  search nodes " << r.search_nodes << ", tuples with no cell at v " << r.empty << ", at most " << r.max_shared
-           << " shared statuses; W11: " << r.corner_pieces << " pieces, " << r.corner_quadrant_tuples << " quadrant tuples\n";
+           << " statuses shared by two leaves or tied to another leaf's by an implication (W9 (v)); W11: " << r.corner_pieces << " pieces, " << r.corner_quadrant_tuples << " quadrant tuples\n";
     for (const auto& f : r.failures) report << "  FAIL " << f << '\n';
     out.summary = summary.str();
     out.report = report.str();
