@@ -222,7 +222,9 @@ TEST(WeakStars, TheOddPairsQuadrantTuplesHaveValidWitnessStars) {
         EXPECT_EQ(g.corner_pairs, 1);
         EXPECT_EQ(g.corner_witnesses, 2736);  // = W11's quadrant tuples
         EXPECT_EQ(static_cast<long>(told.size()), g.corner_witnesses);
-        if (how == CornerPairs::Always) EXPECT_EQ(g.corner_quadrant_tuples, g.corner_witnesses);
+        if (how == CornerPairs::Always) {
+            EXPECT_EQ(g.corner_quadrant_tuples, g.corner_witnesses);
+        }
         std::set<std::pair<int, int>> quadrants;
         for (const WeakCornerLabel& l : told) quadrants.insert({l.octant, l.other});
         EXPECT_EQ(quadrants.size(), 12u);
@@ -247,7 +249,9 @@ TEST(WeakStars, CornerPairsGiveTheStarByStarVerdicts) {
         };
         const WeakStarCheck r = run_weak_stars(rule, library(), influence, o);
         EXPECT_EQ(static_cast<long>(out.size()), r.pairs);
-        if (how == CornerPairs::Never) EXPECT_EQ(r.corner_pairs, 0);
+        if (how == CornerPairs::Never) {
+            EXPECT_EQ(r.corner_pairs, 0);
+        }
         return out;
     };
     const test::WeakMutant misoriented(false), missing(true);

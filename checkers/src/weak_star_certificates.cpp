@@ -37,29 +37,29 @@ std::string numbers(const auto& xs) {
     for (auto x : xs) out += " " + std::to_string(x);
     return out;
 }
+std::string at(const LatticePoint& v) {
+    return "v - g = (" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+}
 std::string text(const WeakStarLabel& l) {
-    return "parity " + std::to_string(l.parity) + ", v - g = (" + std::to_string(l.v.x) + ", " + std::to_string(l.v.y) +
-           ", " + std::to_string(l.v.z) + "), levels - m" + numbers(l.levels) + ", pieces" + numbers(l.pieces);
+    return "parity " + std::to_string(l.parity) + ", " + at(l.v) + ", levels - m" + numbers(l.levels) + ", pieces" +
+           numbers(l.pieces);
 }
 std::string text(const WeakCornerLabel& l) {
-    return "parity " + std::to_string(l.parity) + ", v - g = (" + std::to_string(l.v.x) + ", " + std::to_string(l.v.y) +
-           ", " + std::to_string(l.v.z) + "), levels - m" + numbers(l.levels) + ", octants " + std::to_string(l.octant) +
-           " and " + std::to_string(l.other) + ", their pieces" + numbers(l.pieces);
+    return "parity " + std::to_string(l.parity) + ", " + at(l.v) + ", levels - m" + numbers(l.levels) + ", octants " +
+           std::to_string(l.octant) + " and " + std::to_string(l.other) + ", their pieces" + numbers(l.pieces);
 }
 std::string text(const RootStarLabel& l) {
     return std::string(l.policy == 0 ? "coarse" : "mirror") + ", sides" + numbers(l.sides) + ", parity" +
-           numbers(l.parity) + ", v - g = (" + std::to_string(l.v.x) + ", " + std::to_string(l.v.y) + ", " +
-           std::to_string(l.v.z) + "), levels - m (outside -1)" + numbers(l.levels) + ", pieces" + numbers(l.pieces);
+           numbers(l.parity) + ", " + at(l.v) + ", levels - m (outside -1)" + numbers(l.levels) + ", pieces" +
+           numbers(l.pieces);
 }
-
 std::string text(const WeakNearRootStarLabel& l) {
     std::string planes;
     for (int a = 0; a < 3; ++a)
         for (const auto& p : {l.below[static_cast<std::size_t>(a)], l.above[static_cast<std::size_t>(a)]})
             planes += p ? " " + std::to_string(*p) : " -";
-    return "parity " + std::to_string(l.parity) + ", v - g = (" + std::to_string(l.v.x) + ", " + std::to_string(l.v.y) +
-           ", " + std::to_string(l.v.z) + "), levels - m" + numbers(l.levels) + ", sides" + numbers(l.sides) +
-           ", further planes (below, above per axis)" + planes + ", pieces" + numbers(l.pieces);
+    return "parity " + std::to_string(l.parity) + ", " + at(l.v) + ", levels - m" + numbers(l.levels) + ", sides" +
+           numbers(l.sides) + ", further planes (below, above per axis)" + planes + ", pieces" + numbers(l.pieces);
 }
 
 // A star on root planes (the inside leaves' cells at v) reflected across them into a whole
